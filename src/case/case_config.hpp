@@ -1,0 +1,75 @@
+// A case: everything that describes one simulation. Filled from a TOML case file (case_file.hpp);
+// every default below is documented in docs/case-file.md. The code holds no scene geometry.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace mistfall {
+
+// Axis-aligned box; only the first `dimension` components are used.
+struct Box {
+  std::array<double, 3> min{0.0, 0.0, 0.0};
+  std::array<double, 3> max{0.0, 0.0, 0.0};
+};
+
+enum class Material { Water, Wall };
+
+struct Region {
+  std::string name;
+  Material material = Material::Water;
+  Box box;
+  std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};
+};
+
+struct PhaseProperties {
+  double density = 1000.0;               // [kg/m^3]
+  double kinematic_viscosity = 1.0e-6;   // [m^2/s]
+  // Speed of sound [m/s] for the compressible pressure equation (17); infinity = incompressible (9).
+  double sound_speed = std::numeric_limits<double>::infinity();
+};
+
+struct PhysicsConfig {
+  std::array<double, 3> gravity{0.0, -9.81, 0.0};  // [m/s^2]
+  PhaseProperties liquid{};
+};
+
+enum class PressureSolverKind { EigenIccg, HypreAmg };
+enum class PressureSource { Standard };
+
+struct NumericsConfig {
+  double particle_spacing = 0.0;        // l0 [m]; required
+  double radius_number_density = 2.1;   // re / l0 for number density and gradient
+  double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
+  double courant = 0.2;                 // dt <= courant * l0 / max|u|
+  double dt_max = 1.0e-3;               // [s] cap on the time step
+  double dt_min = 1.0e-8;               // [s] a step below this is a divergence
+  double surface_threshold = 0.97;      // beta: n* < beta n0 -> free surface, p = 0
+  double collision_distance = 0.5;      // too-close pair distance / l0
+  double collision_restitution = 0.2;   // restitution of the collision model
+  PressureSolverKind pressure_solver = PressureSolverKind::EigenIccg;
+  double solver_tolerance = 1.0e-8;     // relative residual |b - Ax| / |b|
+  int solver_max_iterations = 1000;
+  double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
+};
+
+struct OutputConfig {
+  double end_time = 1.0;   // [s]
+  double interval = 0.01;  // [s] between frames / checkpoints
+};
+
+struct CaseConfig {
+  std::string name;
+  int dimension = 2;
+  Box domain;
+  std::vector<Region> regions;
+  PhysicsConfig physics;
+  NumericsConfig numerics;
+  OutputConfig output;
+};
+
+const char* toString(PressureSolverKind k);
+
+}  // namespace mistfall

@@ -1,0 +1,2 @@
+#include <iostream>
+int main() { std::cout << "mistfall " << MISTFALL_VERSION << "\n"; }

@@ -1,0 +1,19 @@
+// The complete state of a run at one instant: what a checkpoint stores and a resume restores.
+#pragma once
+
+#include <cstdint>
+
+#include "mps/particles.hpp"
+
+namespace mistfall {
+
+template <int D>
+struct SimulationState {
+  double time = 0.0;          // simulated time [s]
+  std::int64_t step = 0;      // steps taken
+  double dt = 0.0;            // last time step [s]
+  int next_frame = 0;         // index of the next frame to write
+  Particles<D> particles;
+};
+
+}  // namespace mistfall
