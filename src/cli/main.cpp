@@ -1,2 +1,44 @@
+// mistfall command line: `mistfall simulate CASE.toml --out DIR` and friends. `mistfall --help` lists them.
+#include <CLI/CLI.hpp>
+
 #include <iostream>
-int main() { std::cout << "mistfall " << MISTFALL_VERSION << "\n"; }
+
+#include "cli/simulate.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"mistfall — physically based waterfall animation from a gas-liquid two-phase MPS simulation"};
+  app.set_version_flag("--version", std::string("mistfall ") + MISTFALL_VERSION);
+  app.require_subcommand(1);
+
+  mistfall::SimulateOptions sim;
+  std::filesystem::path resume_dir;
+  auto* simulate = app.add_subcommand(
+      "simulate", "Run the MPS simulation of a case: frames (VTK .vtp + .pvd), diagnostics.csv, checkpoints");
+  simulate->add_option("case", sim.case_file, "Case file (TOML); see docs/case-file.md")->check(CLI::ExistingFile);
+  simulate->add_option("--out,-o", sim.out_dir, "Run directory to write (created; must be new or empty)");
+  simulate->add_option("--until", sim.until, "Stop at this simulated time [s] (default: output.end_time)");
+  simulate->add_option("--threads,-j", sim.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
+  simulate->add_flag("--ascii", sim.ascii, "Write ASCII VTK files instead of binary");
+  simulate->add_option("--resume", resume_dir, "Continue the run in this directory from its last checkpoint")
+      ->check(CLI::ExistingDirectory);
+  simulate->add_flag("--overwrite", sim.overwrite, "Replace the contents of an existing run directory");
+  simulate->add_flag("--plain-progress", sim.force_plain_progress, "Log progress lines instead of a progress bar");
+
+  CLI11_PARSE(app, argc, argv);
+
+  if (simulate->parsed()) {
+    if (!resume_dir.empty()) {
+      if (!sim.case_file.empty()) {
+        std::cerr << "mistfall: give either a case file or --resume DIR, not both (a run directory holds its case)\n";
+        return 1;
+      }
+      sim.resume = true;
+      sim.out_dir = resume_dir;
+    } else if (sim.case_file.empty() || sim.out_dir.empty()) {
+      std::cerr << "mistfall simulate: need CASE.toml and --out DIR (or --resume DIR); see --help\n";
+      return 1;
+    }
+    return mistfall::runSimulate(sim);
+  }
+  return 0;
+}

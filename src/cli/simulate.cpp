@@ -1,0 +1,176 @@
+#include "cli/simulate.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "cli/progress.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/diagnostics.hpp"
+#include "io/pvd_collection.hpp"
+#include "io/vtk_writer.hpp"
+#include "mps/solver.hpp"
+
+namespace fs = std::filesystem;
+
+namespace mistfall {
+
+namespace {
+
+constexpr const char* kCaseCopy = "case.toml";
+constexpr const char* kCheckpoint = "checkpoint.bin";
+constexpr const char* kDiagnostics = "diagnostics.csv";
+constexpr const char* kCollection = "frames.pvd";
+
+std::string frameName(int frame) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "frames/frame_%05d.vtp", frame);
+  return buf;
+}
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+template <int D>
+DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const MpsSolver<D>& solver, const StepReport& last,
+                             double wall_seconds) {
+  DiagnosticsRow row;
+  row.time = s.time;
+  row.step = s.step;
+  row.dt = s.dt;
+  const auto& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    switch (p.kind[i]) {
+      case ParticleKind::Fluid: (p.phase[i] == Phase::Liquid ? row.liquid : row.gas) += 1; break;
+      case ParticleKind::Wall: row.wall += 1; break;
+      case ParticleKind::Dummy: row.dummy += 1; break;
+      case ParticleKind::Escaped: row.escaped += 1; break;
+    }
+  }
+  row.max_speed = solver.maxFluidSpeed();
+  row.kinetic_energy = solver.fluidKineticEnergy();
+  row.ppe_iterations = last.ppe_iterations;
+  row.ppe_residual = last.ppe_residual;
+  row.wall_seconds = wall_seconds;
+  return row;
+}
+
+template <int D>
+int run(const CaseConfig& config, const SimulateOptions& options) {
+  const fs::path dir = options.out_dir;
+  SimulationState<D> state;
+  double wall_offset = 0.0;
+  if (options.resume) {
+    state = readCheckpoint<D>(dir / kCheckpoint);
+    for (const auto& row : DiagnosticsWriter::read(dir / kDiagnostics))
+      if (row.time <= state.time + 1e-12) wall_offset = row.wall_seconds;
+  } else {
+    state.particles = buildParticles<D>(config);
+  }
+  const double end_time = std::min(config.output.end_time, options.until.value_or(config.output.end_time));
+  const double interval = config.output.interval;
+
+  MpsSolver<D> solver(config, state);
+  PvdCollection collection(dir / kCollection);
+  std::optional<double> resume_time;
+  if (options.resume) {
+    collection.load();
+    collection.truncateAfter(state.time);
+    resume_time = state.time;
+  }
+  DiagnosticsWriter diagnostics(dir / kDiagnostics, resume_time);
+  const double wall_start = omp_get_wtime();
+  StepReport last;
+
+  auto writeOutput = [&]() {
+    const std::string name = frameName(state.next_frame);
+    writeVtp<D>(dir / name, state.particles, state.time, options.ascii);
+    collection.add(state.time, name);
+    collection.write();
+    diagnostics.append(diagnosticsOf(state, solver, last, wall_offset + omp_get_wtime() - wall_start));
+    state.next_frame += 1;
+    writeCheckpoint<D>(dir / kCheckpoint, state);
+  };
+
+  if (!options.resume) writeOutput();  // frame 0: the initial state
+
+  ProgressReporter progress(end_time, state.time, std::cerr, options.force_plain_progress);
+  const double eps = 1e-9 * interval;
+  try {
+    while (state.time < end_time - eps) {
+      const double next_output = std::min(end_time, state.next_frame * interval);
+      while (state.time < next_output - eps) {
+        last = solver.step(next_output);
+        progress.update(state.time, state.step, state.dt);
+      }
+      if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();
+    }
+  } catch (const DivergenceError& e) {
+    progress.finish();
+    std::cerr << "mistfall: the run diverged at t = " << e.time() << " s, step " << e.step() << ": " << e.what()
+              << "\nmistfall: frames up to t = " << (state.next_frame - 1) * interval << " s are kept in " << dir
+              << "\n";
+    return 3;
+  }
+  progress.finish();
+  std::cerr << "mistfall: done, t = " << state.time << " s in " << state.step << " steps, "
+            << state.next_frame << " frames in " << (dir / "frames") << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int runSimulate(const SimulateOptions& options) {
+  CaseConfig config;
+  try {
+    if (options.resume) {
+      if (!fs::exists(options.out_dir / kCheckpoint))
+        throw CaseError("cannot resume: " + (options.out_dir / kCheckpoint).string() + " does not exist");
+      config = loadCaseFile(options.out_dir / kCaseCopy);
+      const int dim = checkpointDimension(options.out_dir / kCheckpoint);
+      if (dim != config.dimension)
+        throw CaseError("cannot resume: checkpoint is " + std::to_string(dim) + "D but the case is " +
+                        std::to_string(config.dimension) + "D");
+    } else {
+      config = loadCaseFile(options.case_file);
+      if (fs::exists(options.out_dir) && !fs::is_empty(options.out_dir) && !options.overwrite)
+        throw CaseError("output directory " + options.out_dir.string() +
+                        " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
+    }
+    if (options.until && !(*options.until > 0.0))
+      throw CaseError("--until must be a positive time in seconds");
+  } catch (const std::exception& e) {
+    std::cerr << "mistfall: " << e.what() << "\n";
+    return 1;
+  }
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+
+  if (!options.resume) {
+    if (options.overwrite) {
+      for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy}) fs::remove(options.out_dir / f);
+      fs::remove_all(options.out_dir / "frames");
+    }
+    fs::create_directories(options.out_dir / "frames");
+    const std::string text = readText(options.case_file);
+    writeFileAtomically(options.out_dir / kCaseCopy, [&](std::ostream& out) { out << text; });
+  }
+  try {
+    return config.dimension == 2 ? run<2>(config, options) : run<3>(config, options);
+  } catch (const std::exception& e) {
+    std::cerr << "mistfall: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace mistfall

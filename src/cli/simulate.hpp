@@ -1,0 +1,24 @@
+// `mistfall simulate`: runs a case from its TOML file (or resumes a run directory) and writes frames,
+// the .pvd collection, diagnostics.csv and a checkpoint at every output time.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace mistfall {
+
+struct SimulateOptions {
+  std::filesystem::path case_file;    // empty when resuming
+  std::filesystem::path out_dir;      // run directory (the resume directory when resuming)
+  std::optional<double> until;        // stop at this simulated time (default: output.end_time)
+  int threads = 0;                    // 0: OpenMP default
+  bool ascii = false;                 // ASCII VTK instead of binary
+  bool resume = false;                // continue from out_dir/checkpoint.bin
+  bool overwrite = false;             // allow replacing an existing run directory
+  bool force_plain_progress = false;  // log lines instead of a redrawn bar
+};
+
+// Exit codes: 0 done, 1 bad input (nothing written), 3 diverged (frames written so far kept).
+int runSimulate(const SimulateOptions& options);
+
+}  // namespace mistfall

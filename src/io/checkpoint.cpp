@@ -1,0 +1,218 @@
+// Binary restart checkpoints: writer, header probe and validating reader.
+#include "io/checkpoint.hpp"
+
+#include <bit>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+
+namespace mistfall {
+
+static_assert(std::endian::native == std::endian::little, "checkpoints assume a little-endian host");
+static_assert(sizeof(Vec<2>) == 2 * sizeof(double) && sizeof(Vec<3>) == 3 * sizeof(double));
+static_assert(sizeof(ParticleKind) == 1 && sizeof(Phase) == 1);
+
+namespace {
+
+constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
+constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
+constexpr std::uint32_t kVersion = 1;
+
+struct Header {
+  std::uint32_t version = kVersion;
+  std::uint32_t dimension = 0;
+  std::uint64_t count = 0;
+  double time = 0.0;
+  std::int64_t step = 0;
+  double dt = 0.0;
+  std::int64_t next_frame = 0;
+};
+// (Serialized field by field, so struct padding never reaches the file.)
+
+// FNV-1a, 64 bit.
+struct Checksum {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  void add(const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ULL;
+  }
+};
+
+class Writer {
+ public:
+  explicit Writer(std::ostream& os) : os_(os) {}
+  void raw(const void* data, std::size_t n) {
+    sum_.add(data, n);
+    os_.write(static_cast<const char*>(data), static_cast<std::streamsize>(n));
+  }
+  template <class T>
+  void value(const T& v) { raw(&v, sizeof(T)); }
+  std::uint64_t checksum() const { return sum_.h; }
+
+ private:
+  std::ostream& os_;
+  Checksum sum_;
+};
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
+  throw std::runtime_error("checkpoint '" + file.string() + "': " + what);
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::filesystem::path& file) : file_(file), in_(file, std::ios::binary) {
+    if (!std::filesystem::exists(file)) fail(file, "file not found");
+    if (!in_) fail(file, "cannot open");
+    std::error_code ec;
+    size_ = std::filesystem::file_size(file, ec);
+    if (ec) fail(file, "cannot determine size");
+  }
+  void raw(void* data, std::size_t n) {
+    if (n > remaining()) fail(file_, "file is truncated");
+    in_.read(static_cast<char*>(data), static_cast<std::streamsize>(n));
+    if (!in_) fail(file_, "file is truncated");
+    pos_ += n;
+    sum_.add(data, n);
+  }
+  template <class T>
+  T value() {
+    T v{};
+    raw(&v, sizeof(T));
+    return v;
+  }
+  std::uint64_t remaining() const { return size_ - pos_; }
+  std::uint64_t checksum() const { return sum_.h; }
+  void resetChecksum() { sum_ = Checksum{}; }
+
+ private:
+  std::filesystem::path file_;
+  std::ifstream in_;
+  std::uint64_t size_ = 0, pos_ = 0;
+  Checksum sum_;
+};
+
+Header readHeader(Reader& r, const std::filesystem::path& file) {
+  char magic[sizeof(kMagic)];
+  r.raw(magic, sizeof(magic));
+  if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) fail(file, "not a mistfall checkpoint (wrong magic)");
+  r.resetChecksum();
+  Header h;
+  h.version = r.value<std::uint32_t>();
+  if (h.version != kVersion) {
+    fail(file, "unsupported format version " + std::to_string(h.version) + " (this build reads version " +
+                   std::to_string(kVersion) + ")");
+  }
+  h.dimension = r.value<std::uint32_t>();
+  if (h.dimension != 2 && h.dimension != 3) fail(file, "invalid dimension " + std::to_string(h.dimension));
+  h.count = r.value<std::uint64_t>();
+  h.time = r.value<double>();
+  h.step = r.value<std::int64_t>();
+  h.dt = r.value<double>();
+  h.next_frame = r.value<std::int64_t>();
+  return h;
+}
+
+template <class T>
+void readVector(Reader& r, std::vector<T>& v, std::size_t n) {
+  v.resize(n);
+  if (n) r.raw(v.data(), n * sizeof(T));
+}
+
+}  // namespace
+
+template <int D>
+void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s) {
+  const Particles<D>& p = s.particles;
+  const std::size_t n = p.size();
+  if (p.velocity.size() != n || p.pressure.size() != n || p.number_density.size() != n || p.kind.size() != n ||
+      p.phase.size() != n) {
+    throw std::runtime_error("writeCheckpoint '" + file.string() + "': particle arrays have different lengths");
+  }
+  writeFileAtomically(file, [&](std::ostream& os) {
+    os.write(kMagic, sizeof(kMagic));
+    Writer w(os);
+    Header h;
+    h.dimension = D;
+    h.count = n;
+    h.time = s.time;
+    h.step = s.step;
+    h.dt = s.dt;
+    h.next_frame = s.next_frame;
+    w.value(h.version);
+    w.value(h.dimension);
+    w.value(h.count);
+    w.value(h.time);
+    w.value(h.step);
+    w.value(h.dt);
+    w.value(h.next_frame);
+    if (n) {
+      w.raw(p.position.data(), n * sizeof(Vec<D>));
+      w.raw(p.velocity.data(), n * sizeof(Vec<D>));
+      w.raw(p.pressure.data(), n * sizeof(double));
+      w.raw(p.number_density.data(), n * sizeof(double));
+      w.raw(p.kind.data(), n);
+      w.raw(p.phase.data(), n);
+    }
+    const std::uint64_t sum = w.checksum();
+    os.write(reinterpret_cast<const char*>(&sum), sizeof(sum));
+    os.write(kEndMarker, sizeof(kEndMarker));
+  });
+}
+
+int checkpointDimension(const std::filesystem::path& file) {
+  Reader r(file);
+  return static_cast<int>(readHeader(r, file).dimension);
+}
+
+template <int D>
+SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
+  Reader r(file);
+  const Header h = readHeader(r, file);
+  if (h.dimension != D) {
+    fail(file, "checkpoint is " + std::to_string(h.dimension) + "D, case is " + std::to_string(D) + "D");
+  }
+  // Check the size before allocating, so a corrupt count cannot ask for absurd memory.
+  const std::uint64_t per_particle = 2 * sizeof(Vec<D>) + 2 * sizeof(double) + 2;
+  const std::uint64_t trailer = sizeof(std::uint64_t) + sizeof(kEndMarker);
+  if (r.remaining() < trailer || h.count > (r.remaining() - trailer) / per_particle) {
+    fail(file, "file is truncated (header says " + std::to_string(h.count) + " particles)");
+  }
+  SimulationState<D> s;
+  s.time = h.time;
+  s.step = h.step;
+  s.dt = h.dt;
+  s.next_frame = static_cast<int>(h.next_frame);
+  const std::size_t n = h.count;
+  Particles<D>& p = s.particles;
+  readVector(r, p.position, n);
+  readVector(r, p.velocity, n);
+  readVector(r, p.pressure, n);
+  readVector(r, p.number_density, n);
+  readVector(r, p.kind, n);
+  readVector(r, p.phase, n);
+  const std::uint64_t expected = r.checksum();
+  const auto stored = r.value<std::uint64_t>();
+  char end[sizeof(kEndMarker)];
+  r.raw(end, sizeof(end));
+  if (std::memcmp(end, kEndMarker, sizeof(kEndMarker)) != 0) fail(file, "missing end marker (truncated?)");
+  if (stored != expected) fail(file, "checksum mismatch (file corrupted)");
+  if (r.remaining() != 0) fail(file, "unexpected trailing bytes");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Escaped) ||
+        static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas)) {
+      fail(file, "invalid particle kind/phase value");
+    }
+  }
+  return s;
+}
+
+template void writeCheckpoint<2>(const std::filesystem::path&, const SimulationState<2>&);
+template void writeCheckpoint<3>(const std::filesystem::path&, const SimulationState<3>&);
+template SimulationState<2> readCheckpoint<2>(const std::filesystem::path&);
+template SimulationState<3> readCheckpoint<3>(const std::filesystem::path&);
+
+}  // namespace mistfall

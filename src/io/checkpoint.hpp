@@ -1,0 +1,25 @@
+// Binary restart checkpoints: the exact SimulationState (raw doubles, so a resume is bit-identical).
+#pragma once
+
+#include <filesystem>
+
+#include "mps/simulation_state.hpp"
+
+namespace mistfall {
+
+// Layout (little-endian): "MISTFALLCKPT", uint32 version, uint32 dimension, uint64 particle count,
+// float64 time, int64 step, float64 dt, int64 next_frame, then position (N*D float64), velocity (N*D),
+// pressure (N), number_density (N), kind (N uint8), phase (N uint8), uint64 FNV-1a checksum of every
+// byte after the magic, and the end marker "MISTFALLEND!". Written atomically.
+template <int D>
+void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s);
+
+// Throws std::runtime_error naming the path on: missing file, wrong magic, unsupported version,
+// dimension mismatch ("checkpoint is 3D, case is 2D"), truncated or corrupted file.
+template <int D>
+SimulationState<D> readCheckpoint(const std::filesystem::path& file);
+
+// The dimension stored in the checkpoint header (2 or 3); same errors as readCheckpoint for the header.
+int checkpointDimension(const std::filesystem::path& file);
+
+}  // namespace mistfall

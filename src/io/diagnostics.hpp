@@ -1,0 +1,51 @@
+// Per-output-time run diagnostics written to DIR/diagnostics.csv (one row per output time), resumable.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mps/particles.hpp"
+
+namespace mistfall {
+
+struct DiagnosticsRow {
+  double time = 0;
+  std::int64_t step = 0;
+  double dt = 0;
+  std::size_t liquid = 0, gas = 0, wall = 0, dummy = 0, escaped = 0;  // counts
+  double max_speed = 0, kinetic_energy = 0;  // kinetic energy per unit width in 2D [J/m], J in 3D
+  int ppe_iterations = 0;
+  double ppe_residual = 0;  // of the last step
+  double wall_seconds = 0;  // wall-clock since run start (cumulative, survives resume)
+};
+
+// Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and
+// kinetic_energy (over Fluid particles; a particle's mass is density * l0^D, per unit width in 2D).
+template <int D>
+void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_particle_mass,
+                      double gas_particle_mass);
+
+class DiagnosticsWriter {
+ public:
+  // Creates (truncates) the file and writes the header; if resume_time is given, keeps the existing rows
+  // with time <= resume_time (+1e-12) and drops the later ones (rewritten atomically), then appends.
+  DiagnosticsWriter(const std::filesystem::path& file, std::optional<double> resume_time = std::nullopt);
+  void append(const DiagnosticsRow& row);  // appends one line and flushes
+
+  // Reads a diagnostics file. Columns are matched by header name (missing ones stay default, unknown ones
+  // are ignored); an incomplete last line (a crash mid-append) is skipped. Throws on a missing file.
+  static std::vector<DiagnosticsRow> read(const std::filesystem::path& file);
+
+  static std::string header();                         // the CSV header line, no newline
+  static std::string formatRow(const DiagnosticsRow& row);  // one CSV line, no newline
+
+ private:
+  std::filesystem::path file_;
+  std::ofstream out_;
+};
+
+}  // namespace mistfall

@@ -1,0 +1,325 @@
+// VTK XML PolyData (.vtp) writer (appended raw binary or ascii) and a reader for the files it writes.
+#include "io/vtk_writer.hpp"
+
+#include <bit>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "io/text_format.hpp"
+
+namespace mistfall {
+
+static_assert(std::endian::native == std::endian::little, "the VTK writer assumes a little-endian host");
+
+namespace {
+
+using ArrayData = std::variant<std::vector<double>, std::vector<std::uint8_t>, std::vector<std::int64_t>>;
+
+struct Array {
+  std::string name;
+  int components = 1;
+  ArrayData data;
+};
+
+const char* vtkTypeName(const ArrayData& d) {
+  switch (d.index()) {
+    case 0: return "Float64";
+    case 1: return "UInt8";
+    default: return "Int64";
+  }
+}
+
+// Appends one appended-data block (UInt64 byte count + raw bytes) to `blob`.
+void appendBlock(std::string& blob, const ArrayData& d) {
+  std::visit(
+      [&blob](const auto& v) {
+        const std::uint64_t bytes = v.size() * sizeof(v[0]);
+        blob.append(reinterpret_cast<const char*>(&bytes), sizeof(bytes));
+        if (bytes) blob.append(reinterpret_cast<const char*>(v.data()), bytes);
+      },
+      d);
+}
+
+void writeAsciiValues(std::ostream& os, const ArrayData& d, const std::string& indent) {
+  std::visit(
+      [&](const auto& v) {
+        using T = std::decay_t<decltype(v[0])>;
+        const std::size_t per_line = std::is_same_v<T, double> ? 6 : 20;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+          if (i % per_line == 0) os << (i ? "\n" : "") << indent;
+          else os << ' ';
+          if constexpr (std::is_same_v<T, double>) os << text::formatDouble(v[i]);
+          else os << static_cast<std::int64_t>(v[i]);
+        }
+        if (!v.empty()) os << '\n';
+      },
+      d);
+}
+
+// Writes one <DataArray>; in binary mode, appends its block to `blob` and references it by offset.
+void writeArray(std::ostream& os, const Array& a, bool ascii, std::string& blob, const std::string& indent,
+                bool field_data) {
+  os << indent << "<DataArray type=\"" << vtkTypeName(a.data) << "\" Name=\"" << a.name << '"';
+  if (field_data) {
+    os << " NumberOfTuples=\"" << std::visit([](const auto& v) { return v.size(); }, a.data) << '"';
+  }
+  if (a.components != 1) os << " NumberOfComponents=\"" << a.components << '"';
+  if (ascii) {
+    os << " format=\"ascii\">\n";
+    writeAsciiValues(os, a.data, indent + "  ");
+    os << indent << "</DataArray>\n";
+  } else {
+    os << " format=\"appended\" offset=\"" << blob.size() << "\"/>\n";
+    appendBlock(blob, a.data);
+  }
+}
+
+template <int D>
+std::vector<double> padTo3(const std::vector<Vec<D>>& v) {
+  std::vector<double> out(3 * v.size(), 0.0);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int k = 0; k < D; ++k) out[3 * i + k] = v[i][k];
+  return out;
+}
+
+template <class E>
+std::vector<std::uint8_t> asBytes(const std::vector<E>& v) {
+  std::vector<std::uint8_t> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = static_cast<std::uint8_t>(v[i]);
+  return out;
+}
+
+// ---- reading ----
+
+struct ArrayInfo {
+  std::string type;
+  int components = 1;
+  bool appended = false;
+  std::size_t offset = 0;
+  std::string_view ascii_text;
+};
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
+  throw std::runtime_error("malformed VTK file '" + file.string() + "': " + what);
+}
+
+template <class T>
+std::vector<T> decodeArray(const std::filesystem::path& file, const std::string& name, const ArrayInfo& info,
+                           std::string_view appended, std::size_t expected_values) {
+  const char* want = std::is_same_v<T, double> ? "Float64" : std::is_same_v<T, std::uint8_t> ? "UInt8" : "Int64";
+  if (info.type != want) fail(file, "array '" + name + "' has type " + info.type + ", expected " + want);
+  std::vector<T> out(expected_values);
+  if (info.appended) {
+    if (info.offset + sizeof(std::uint64_t) > appended.size()) fail(file, "array '" + name + "' lies past the end");
+    std::uint64_t bytes = 0;
+    std::memcpy(&bytes, appended.data() + info.offset, sizeof(bytes));
+    if (bytes != expected_values * sizeof(T)) fail(file, "array '" + name + "' has the wrong size");
+    if (info.offset + sizeof(bytes) + bytes > appended.size()) fail(file, "array '" + name + "' is truncated");
+    if (bytes) std::memcpy(out.data(), appended.data() + info.offset + sizeof(bytes), bytes);
+    return out;
+  }
+  std::size_t n = 0, pos = 0;
+  const std::string_view s = info.ascii_text;
+  while (true) {
+    while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos]))) ++pos;
+    if (pos >= s.size()) break;
+    std::size_t end = pos;
+    while (end < s.size() && !std::isspace(static_cast<unsigned char>(s[end]))) ++end;
+    if (n >= expected_values) fail(file, "array '" + name + "' has too many values");
+    const std::string_view token = s.substr(pos, end - pos);
+    if constexpr (std::is_same_v<T, double>) {
+      auto v = text::parseDouble(token);
+      if (!v) fail(file, "bad number '" + std::string(token) + "' in array '" + name + "'");
+      out[n++] = *v;
+    } else {
+      auto v = text::parseInt(token);
+      if (!v || (std::is_same_v<T, std::uint8_t> && (*v < 0 || *v > 255))) fail(file, "bad value '" + std::string(token) + "' in array '" + name + "'");
+      out[n++] = static_cast<T>(*v);
+    }
+    pos = end;
+  }
+  if (n != expected_values) fail(file, "array '" + name + "' has too few values");
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii) {
+  const std::size_t n = p.size();
+  std::vector<std::int64_t> connectivity(n), offsets(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    connectivity[i] = static_cast<std::int64_t>(i);
+    offsets[i] = static_cast<std::int64_t>(i + 1);
+  }
+  const std::vector<Array> point_data = {
+      {"phase", 1, asBytes(p.phase)},
+      {"kind", 1, asBytes(p.kind)},
+      {"velocity", 3, padTo3<D>(p.velocity)},
+      {"pressure", 1, p.pressure},
+      {"number_density", 1, p.number_density},
+  };
+  // "TIME" as asked for by the pipeline; "TimeValue" is the name VTK/ParaView readers recognise as time.
+  // Field data stays inline ascii (17 digits, exact) in both modes.
+  const std::vector<Array> field_data = {{"TIME", 1, std::vector<double>{time}},
+                                         {"TimeValue", 1, std::vector<double>{time}}};
+
+  writeFileAtomically(file, [&](std::ostream& os) {
+    std::string blob;
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+       << "  <PolyData>\n    <FieldData>\n";
+    for (const auto& a : field_data) writeArray(os, a, true, blob, "      ", true);
+    os << "    </FieldData>\n"
+       << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+       << "      <PointData Scalars=\"pressure\" Vectors=\"velocity\">\n";
+    for (const auto& a : point_data) writeArray(os, a, ascii, blob, "        ", false);
+    os << "      </PointData>\n      <Points>\n";
+    writeArray(os, {"Points", 3, padTo3<D>(p.position)}, ascii, blob, "        ", false);
+    os << "      </Points>\n      <Verts>\n";
+    writeArray(os, {"connectivity", 1, std::move(connectivity)}, ascii, blob, "        ", false);
+    writeArray(os, {"offsets", 1, std::move(offsets)}, ascii, blob, "        ", false);
+    os << "      </Verts>\n    </Piece>\n  </PolyData>\n";
+    if (!ascii) {
+      os << "  <AppendedData encoding=\"raw\">\n   _";
+      os.write(blob.data(), static_cast<std::streamsize>(blob.size()));
+      os << "\n  </AppendedData>\n";
+    }
+    os << "</VTKFile>\n";
+  });
+}
+
+template <int D>
+Particles<D> readVtp(const std::filesystem::path& file, double* time) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open VTK file '" + file.string() + "'");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error("error reading VTK file '" + file.string() + "'");
+
+  try {
+    // Split the XML header from the raw appended bytes (which may contain anything, including '<').
+    std::string_view header(doc);
+    std::string_view appended;
+    if (auto ad = text::findTag(header, "AppendedData")) {
+      if (ad->attr("encoding") != "raw") fail(file, "only raw appended data is supported");
+      const std::size_t underscore = doc.find('_', ad->end);
+      if (underscore == std::string::npos) fail(file, "appended data has no '_' marker");
+      header = std::string_view(doc).substr(0, ad->begin);
+      appended = std::string_view(doc).substr(underscore + 1);
+    }
+    // A truncated file lacks the closing tag (the appended bytes come before it).
+    constexpr std::string_view kClose = "</VTKFile>";
+    const std::size_t last = doc.find_last_not_of(" \t\r\n");
+    if (last == std::string::npos || last + 1 < kClose.size() ||
+        std::string_view(doc).substr(last + 1 - kClose.size(), kClose.size()) != kClose) {
+      fail(file, "missing </VTKFile> (truncated?)");
+    }
+    auto root = text::findTag(header, "VTKFile");
+    if (!root || root->attr("type") != "PolyData") fail(file, "not a VTK PolyData file");
+    if (!appended.empty() || text::findTag(header, "AppendedData")) {
+      if (root->attr("byte_order") != "LittleEndian" || root->attr("header_type") != "UInt64")
+        fail(file, "unsupported byte order or header type");
+    }
+    auto piece = text::findTag(header, "Piece");
+    if (!piece) fail(file, "no <Piece>");
+    auto n_points = text::parseInt(piece->attr("NumberOfPoints"));
+    if (!n_points || *n_points < 0) fail(file, "bad NumberOfPoints");
+    const auto n = static_cast<std::size_t>(*n_points);
+
+    std::map<std::string, ArrayInfo> arrays;
+    for (std::size_t pos = 0;;) {
+      auto tag = text::findTag(header, "DataArray", pos);
+      if (!tag) break;
+      ArrayInfo info;
+      info.type = tag->attr("type");
+      if (auto c = tag->attr("NumberOfComponents"); !c.empty()) {
+        auto v = text::parseInt(c);
+        if (!v || *v < 1) fail(file, "bad NumberOfComponents");
+        info.components = static_cast<int>(*v);
+      }
+      const std::string format = tag->attr("format");
+      pos = tag->end;
+      if (format == "appended") {
+        auto off = text::parseInt(tag->attr("offset"));
+        if (!off || *off < 0) fail(file, "bad offset");
+        info.appended = true;
+        info.offset = static_cast<std::size_t>(*off);
+      } else if (format == "ascii") {
+        if (!tag->self_closing) {
+          const std::size_t close = header.find("</DataArray>", tag->end);
+          if (close == std::string_view::npos) fail(file, "unterminated <DataArray>");
+          info.ascii_text = header.substr(tag->end, close - tag->end);
+          pos = close;
+        }
+      } else {
+        fail(file, "unsupported DataArray format '" + format + "'");
+      }
+      arrays[tag->attr("Name")] = info;
+    }
+    auto get = [&](const std::string& name, int components) -> const ArrayInfo& {
+      auto it = arrays.find(name);
+      if (it == arrays.end()) fail(file, "missing array '" + name + "'");
+      if (it->second.components != components) fail(file, "array '" + name + "' has the wrong component count");
+      if (it->second.appended && appended.empty()) fail(file, "array '" + name + "' refers to missing appended data");
+      return it->second;
+    };
+
+    const auto pos3 = decodeArray<double>(file, "Points", get("Points", 3), appended, 3 * n);
+    const auto vel3 = decodeArray<double>(file, "velocity", get("velocity", 3), appended, 3 * n);
+    const auto pressure = decodeArray<double>(file, "pressure", get("pressure", 1), appended, n);
+    const auto density = decodeArray<double>(file, "number_density", get("number_density", 1), appended, n);
+    const auto kind = decodeArray<std::uint8_t>(file, "kind", get("kind", 1), appended, n);
+    const auto phase = decodeArray<std::uint8_t>(file, "phase", get("phase", 1), appended, n);
+    decodeArray<std::int64_t>(file, "connectivity", get("connectivity", 1), appended, n);
+    decodeArray<std::int64_t>(file, "offsets", get("offsets", 1), appended, n);
+
+    Particles<D> p;
+    p.position.resize(n);
+    p.velocity.resize(n);
+    p.pressure = pressure;
+    p.number_density = density;
+    p.kind.resize(n);
+    p.phase.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < D; ++k) {
+        p.position[i][k] = pos3[3 * i + k];
+        p.velocity[i][k] = vel3[3 * i + k];
+      }
+      if (kind[i] > static_cast<std::uint8_t>(ParticleKind::Escaped)) fail(file, "invalid particle kind");
+      if (phase[i] > static_cast<std::uint8_t>(Phase::Gas)) fail(file, "invalid particle phase");
+      p.kind[i] = static_cast<ParticleKind>(kind[i]);
+      p.phase[i] = static_cast<Phase>(phase[i]);
+    }
+    if (time) {
+      *time = 0.0;
+      for (const char* name : {"TIME", "TimeValue"}) {
+        if (arrays.count(name)) {
+          *time = decodeArray<double>(file, name, get(name, 1), appended, 1)[0];
+          break;
+        }
+      }
+    }
+    return p;
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    if (msg.find(file.string()) != std::string::npos) throw;
+    fail(file, msg);
+  }
+}
+
+template void writeVtp<2>(const std::filesystem::path&, const Particles<2>&, double, bool);
+template void writeVtp<3>(const std::filesystem::path&, const Particles<3>&, double, bool);
+template Particles<2> readVtp<2>(const std::filesystem::path&, double*);
+template Particles<3> readVtp<3>(const std::filesystem::path&, double*);
+
+}  // namespace mistfall
