@@ -37,7 +37,9 @@ struct PhysicsConfig {
 };
 
 enum class PressureSolverKind { EigenIccg, HypreAmg };
-enum class PressureSource { Standard };
+// Source term of the PPE. Standard: eq. (9), -rho/dt^2 (n* - n0)/n0 (the paper's original MPS).
+// Mixed (Tanaka & Masunaga 2010): rho/dt div u* - gamma rho/dt^2 (n* - n0)/n0, far less pressure noise.
+enum class PressureSource { Standard, Mixed };
 
 struct NumericsConfig {
   double particle_spacing = 0.0;        // l0 [m]; required
@@ -49,6 +51,8 @@ struct NumericsConfig {
   double surface_threshold = 0.97;      // beta: n* < beta n0 -> free surface, p = 0
   double collision_distance = 0.5;      // too-close pair distance / l0
   double collision_restitution = 0.2;   // restitution of the collision model
+  PressureSource pressure_source = PressureSource::Standard;
+  double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
   PressureSolverKind pressure_solver = PressureSolverKind::EigenIccg;
   double solver_tolerance = 1.0e-8;     // relative residual |b - Ax| / |b|
   int solver_max_iterations = 1000;

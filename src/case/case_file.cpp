@@ -308,7 +308,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
                {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
-                "surface_threshold", "collision_distance", "collision_restitution", "pressure_solver",
+                "surface_threshold", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
@@ -320,6 +320,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "surface_threshold", {0.0, 1.0, true, true}, n.surface_threshold);
   rd.number(nm, np, "collision_distance", {0.0, 1.0, false, true}, n.collision_distance);
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
+  if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)
+    n.pressure_source = s == 0 ? PressureSource::Standard : PressureSource::Mixed;
+  rd.number(nm, np, "source_relaxation", {0.0, 1.0, true, false}, n.source_relaxation);
   if (int s = rd.choice(nm, np, "pressure_solver", {"iccg", "amg"}); s >= 0)
     n.pressure_solver = s == 0 ? PressureSolverKind::EigenIccg : PressureSolverKind::HypreAmg;
   rd.number(nm, np, "solver_tolerance", {0.0, 1e-2, true, false}, n.solver_tolerance);

@@ -24,7 +24,12 @@ int main(int argc, char** argv) {
   simulate->add_flag("--overwrite", sim.overwrite, "Replace the contents of an existing run directory");
   simulate->add_flag("--plain-progress", sim.force_plain_progress, "Log progress lines instead of a progress bar");
 
-  CLI11_PARSE(app, argc, argv);
+  // Command-line errors are bad input: exit code 1 like every other input error (CLI11 would use 100+).
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 1;
+  }
 
   if (simulate->parsed()) {
     if (!resume_dir.empty()) {

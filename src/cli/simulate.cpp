@@ -144,6 +144,9 @@ int runSimulate(const SimulateOptions& options) {
                         std::to_string(config.dimension) + "D");
     } else {
       config = loadCaseFile(options.case_file);
+      if (options.out_dir.empty()) throw CaseError("no output directory given (--out DIR)");
+      if (fs::exists(options.out_dir) && !fs::is_directory(options.out_dir))
+        throw CaseError("output path " + options.out_dir.string() + " exists and is not a directory");
       if (fs::exists(options.out_dir) && !fs::is_empty(options.out_dir) && !options.overwrite)
         throw CaseError("output directory " + options.out_dir.string() +
                         " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
@@ -157,13 +160,19 @@ int runSimulate(const SimulateOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
   if (!options.resume) {
-    if (options.overwrite) {
-      for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy}) fs::remove(options.out_dir / f);
-      fs::remove_all(options.out_dir / "frames");
+    // A run directory that cannot be created (a path through a file, no permission) is bad input too.
+    try {
+      if (options.overwrite) {
+        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy}) fs::remove(options.out_dir / f);
+        fs::remove_all(options.out_dir / "frames");
+      }
+      fs::create_directories(options.out_dir / "frames");
+      const std::string text = readText(options.case_file);
+      writeFileAtomically(options.out_dir / kCaseCopy, [&](std::ostream& out) { out << text; });
+    } catch (const std::exception& e) {
+      std::cerr << "mistfall: cannot set up the run directory " << options.out_dir << ": " << e.what() << "\n";
+      return 1;
     }
-    fs::create_directories(options.out_dir / "frames");
-    const std::string text = readText(options.case_file);
-    writeFileAtomically(options.out_dir / kCaseCopy, [&](std::ostream& out) { out << text; });
   }
   try {
     return config.dimension == 2 ? run<2>(config, options) : run<3>(config, options);

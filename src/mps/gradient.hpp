@@ -15,15 +15,17 @@ namespace mistfall {
 
 enum class GradientForm { MinimumNeighbour, Plain };
 
-template <int D, class Include>
+// `include(j)`: neighbours in the sum; `in_minimum(j)`: neighbours whose value may set p_hat.
+template <int D, class Include, class InMinimum>
 Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<double>& phi,
-                  const NeighborList& nl, const MpsConstants& c, GradientForm form, Include&& include) {
+                  const NeighborList& nl, const MpsConstants& c, GradientForm form, Include&& include,
+                  InMinimum&& in_minimum) {
   const double re = c.re_number_density;
   double phi_hat = phi[i];
   if (form == GradientForm::MinimumNeighbour) {
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (include(j) && (position[j] - position[i]).squaredNorm() < re * re) phi_hat = std::min(phi_hat, phi[j]);
+      if (in_minimum(j) && (position[j] - position[i]).squaredNorm() < re * re) phi_hat = std::min(phi_hat, phi[j]);
     }
   }
   Vec<D> sum = Vec<D>::Zero();
@@ -36,6 +38,12 @@ Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std:
     if (w > 0.0) sum += rij * ((phi[j] - phi_hat) * w / r2);
   }
   return sum * (double(D) / c.n0);
+}
+
+template <int D, class Include>
+Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<double>& phi,
+                  const NeighborList& nl, const MpsConstants& c, GradientForm form, Include&& include) {
+  return gradientAt<D>(i, position, phi, nl, c, form, include, include);
 }
 
 }  // namespace mistfall

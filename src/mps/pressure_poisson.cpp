@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mps/divergence.hpp"
 #include "mps/weight.hpp"
 
 namespace mistfall {
@@ -10,7 +11,7 @@ namespace mistfall {
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
                             const std::array<PhaseProperties, 2>& phases, const std::vector<char>& surface,
-                            double dt, PressureSystem& sys) {
+                            PressureSourceTerm source, double dt, PressureSystem& sys) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   auto takesPart = [&](std::int64_t j) { return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall; };
 
@@ -79,15 +80,22 @@ void assemblePressureSystem(const Particles<D>& p, const NeighborList& nl, const
       inner[k] = entries[k - start[r]].first;
       value[k] = entries[k - start[r]].second;
     }
-    sys.rhs[r] = phase.density / (dt * dt) * (p.number_density[i] - c.n0) / c.n0;
+    const double compression = (p.number_density[i] - c.n0) / c.n0;
+    if (source.kind == PressureSource::Standard) {
+      sys.rhs[r] = phase.density / (dt * dt) * compression;
+    } else {
+      auto carriesVelocity = [&](std::int32_t j) { return isActive(p.kind[j]); };
+      const double divergence = divergenceAt<D>(i, p.position, p.velocity, nl, c, carriesVelocity);
+      sys.rhs[r] = -phase.density / dt * divergence + source.relaxation * phase.density / (dt * dt) * compression;
+    }
   }
 }
 
 template void assemblePressureSystem<2>(const Particles<2>&, const NeighborList&, const MpsConstants&,
-                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&, double,
-                                        PressureSystem&);
+                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&,
+                                        PressureSourceTerm, double, PressureSystem&);
 template void assemblePressureSystem<3>(const Particles<3>&, const NeighborList&, const MpsConstants&,
-                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&, double,
-                                        PressureSystem&);
+                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&,
+                                        PressureSourceTerm, double, PressureSystem&);
 
 }  // namespace mistfall

@@ -5,6 +5,8 @@
 //   2D0/(n0 lambda) * sum_j w_ij (p_i - p_j) + p_i / (dt^2 c_i^2) = rho_i / dt^2 * (n*_i - n0) / n0
 // Free-surface particles (n*_i < beta n0) hold p = 0 (Dirichlet): they add to the diagonal only.
 // Dummy particles take no part. c = infinity gives the incompressible equation (9) exactly.
+// With the mixed source (Tanaka & Masunaga 2010) the right-hand side becomes
+//   -rho_i / dt * <div u*>_i + gamma rho_i / dt^2 * (n*_i - n0) / n0      (divergence by divergence.hpp)
 #pragma once
 
 #include <Eigen/Sparse>
@@ -34,10 +36,15 @@ std::vector<char> freeSurfaceFlags(const Particles<D>& p, double beta, double n0
   return surface;
 }
 
-// p.number_density must hold n* (number density after the explicit stage).
+struct PressureSourceTerm {
+  PressureSource kind = PressureSource::Standard;
+  double relaxation = 1.0;  // gamma (mixed source only)
+};
+
+// p.number_density must hold n* and p.velocity u* (after the explicit stage).
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
                             const std::array<PhaseProperties, 2>& phases, const std::vector<char>& surface,
-                            double dt, PressureSystem& sys);
+                            PressureSourceTerm source, double dt, PressureSystem& sys);
 
 }  // namespace mistfall

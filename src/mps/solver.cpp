@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "mps/collision.hpp"
@@ -76,6 +77,7 @@ const StepReport& MpsSolver<D>::step(double until) {
   computeNumberDensity();
   const double tp = omp_get_wtime();
   solvePressure(dt);
+  extrapolateDummyPressure();
   report_.seconds_pressure = omp_get_wtime() - tp;
   correct(dt);
   markEscaped();
@@ -155,7 +157,8 @@ template <int D>
 void MpsSolver<D>::solvePressure(double dt) {
   auto& p = state_.particles;
   const auto surface = freeSurfaceFlags(p, config_.numerics.surface_threshold, constants_.n0);
-  assemblePressureSystem<D>(p, neighbours_, constants_, phases_, surface, dt, system_);
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  assemblePressureSystem<D>(p, neighbours_, constants_, phases_, surface, source, dt, system_);
   const auto rows = system_.particle_of.size();
   pressure_unknowns_.resize(rows);
   for (std::size_t r = 0; r < rows; ++r) pressure_unknowns_[r] = p.pressure[system_.particle_of[r]];
@@ -175,22 +178,48 @@ void MpsSolver<D>::solvePressure(double dt) {
   for (std::size_t r = 0; r < rows; ++r) p.pressure[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
 }
 
+// Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
+// gradient (without them the min-pressure term pushes that fluid into the wall). Each takes the pressure of its
+// nearest wall particle, extrapolated hydrostatically: p_d = p_w + rho g . (r_d - r_w), clamped at 0.
+template <int D>
+void MpsSolver<D>::extrapolateDummyPressure() {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Dummy) continue;
+    double best = std::numeric_limits<double>::infinity();
+    std::int32_t nearest = -1;
+    for (auto s = neighbours_.begin(i); s < neighbours_.end(i); ++s) {
+      const auto j = neighbours_.indices[s];
+      if (p.kind[j] != ParticleKind::Wall) continue;
+      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
+      if (r2 < best) best = r2, nearest = j;
+    }
+    p.pressure[i] =
+        nearest < 0 ? 0.0
+                    : std::max(0.0, p.pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]));
+  }
+}
+
 // Correction: u' = -dt/rho grad p (minimum-neighbour form), u = u* + u', r = r* + dt u'.
 template <int D>
 void MpsSolver<D>::correct(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
-  auto carriesPressure = [&](std::int32_t j) {
+  auto solvedPressure = [&](std::int32_t j) {
     return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall;
   };
+  auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
     const double rho = phases_[static_cast<int>(p.phase[i])].density;
     change[i] = -dt / rho *
                 gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_, GradientForm::MinimumNeighbour,
-                              carriesPressure);
+                              carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {

@@ -1,6 +1,7 @@
 // The MPS time step (semi-implicit two-step method of Koshizuka & Oka, MODEL.md section 1):
 //   buildNeighbours -> chooseTimeStep -> predict (viscosity + gravity, explicit) -> collide
-//   -> buildNeighbours at r* -> numberDensity n* -> solvePressure (eq. (9)/(17)) -> correct (-dt/rho grad p)
+//   -> buildNeighbours at r* -> numberDensity n* -> solvePressure (eq. (9)/(17)) -> extrapolateDummyPressure
+//   -> correct (-dt/rho grad p)
 //   -> markEscaped -> checkHealth
 #pragma once
 
@@ -62,6 +63,7 @@ class MpsSolver {
   void collide(double dt);
   void computeNumberDensity();
   void solvePressure(double dt);
+  void extrapolateDummyPressure();
   void correct(double dt);
   void markEscaped();
   void checkHealth(double dt) const;

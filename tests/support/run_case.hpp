@@ -1,0 +1,30 @@
+// Test helpers: run a case in-process to given times and hand back the state at each.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "mps/solver.hpp"
+
+namespace mistfall::test_support {
+
+inline CaseConfig loadShippedCase(const std::string& name) {
+  return loadCaseFile(std::string(MISTFALL_SOURCE_DIR) + "/cases/" + name);
+}
+
+// Advances a fresh run of `config` through each time in `times` (ascending), calling visit(time, state, solver).
+template <int D>
+void runThrough(const CaseConfig& config, const std::vector<double>& times,
+                const std::function<void(double, const SimulationState<D>&, const MpsSolver<D>&)>& visit) {
+  SimulationState<D> state;
+  state.particles = buildParticles<D>(config);
+  MpsSolver<D> solver(config, state);
+  for (double t : times) {
+    while (state.time < t - 1e-12) solver.step(t);
+    visit(t, state, solver);
+  }
+}
+
+}  // namespace mistfall::test_support

@@ -1,0 +1,697 @@
+// Tests of the `simulate` command: bit-identical resume, thread-count independence, particle bookkeeping,
+// bad input writing nothing, run-directory protection, clean divergence stops, the command line and
+// ASCII frames. Cases are small inline TOML files (a ~200-particle 2D dam break) so each test takes seconds.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/simulate.hpp"
+#include "io/checkpoint.hpp"
+#include "io/diagnostics.hpp"
+#include "io/pvd_collection.hpp"
+#include "io/vtk_writer.hpp"
+
+namespace fs = std::filesystem;
+using namespace mistfall;
+
+namespace {
+
+fs::path testRoot() { return fs::temp_directory_path() / ("mistfall_test_simulate_" + std::to_string(::getpid())); }
+
+// Removes this process's scratch folder after all tests.
+class ScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(testRoot(), ec);
+  }
+};
+[[maybe_unused]] const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+
+// A fresh, empty scratch folder for one test.
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = testRoot() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+fs::path writeCase(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path file = dir / name;
+  std::ofstream(file, std::ios::binary) << text;
+  return file;
+}
+
+// 2D dam break, l0 = 0.01: a 0.1 x 0.2 column (10 x 20 = 200 fluid particles) in a 0.3 m long tank with
+// 4-layer walls. `numerics_extra` / `output_extra` are appended to those tables.
+std::string damBreakCase(double end_time = 0.1, double interval = 0.02, const std::string& numerics_extra = "") {
+  std::ostringstream s;
+  s << R"([case]
+name = "small_dam_break"
+dimension = 2
+
+[domain]
+min = [-0.04, -0.04]
+max = [0.34, 0.30]
+
+[physics]
+gravity = [0.0, -9.81]
+
+[numerics]
+particle_spacing = 0.01
+dt_max = 1.0e-3
+pressure_solver = "iccg"
+max_escaped_fraction = 0.05
+)" << numerics_extra
+    << "\n[output]\nend_time = " << end_time << "\ninterval = " << interval << R"(
+
+[[region]]
+name = "column"
+material = "water"
+min = [0.0, 0.0]
+max = [0.1, 0.2]
+
+[[region]]
+name = "wall_bottom"
+material = "wall"
+min = [-0.04, -0.04]
+max = [0.34, 0.0]
+
+[[region]]
+name = "wall_left"
+material = "wall"
+min = [-0.04, -0.04]
+max = [0.0, 0.26]
+
+[[region]]
+name = "wall_right"
+material = "wall"
+min = [0.3, -0.04]
+max = [0.34, 0.26]
+)";
+  return s.str();
+}
+
+// A 0.1 x 0.1 block of water (100 particles) in a domain without walls whose floor is 0.02 m below the
+// water: the bottom rows fall out of the domain after about 0.07 s and 0.085 s.
+std::string fallingBlockCase(double max_escaped_fraction, double end_time) {
+  std::ostringstream s;
+  s << R"([case]
+name = "falling_block"
+dimension = 2
+
+[domain]
+min = [-0.05, -0.02]
+max = [0.15, 0.25]
+
+[numerics]
+particle_spacing = 0.01
+max_escaped_fraction = )"
+    << max_escaped_fraction << "\n\n[output]\nend_time = " << end_time << R"(
+interval = 0.02
+
+[[region]]
+name = "block"
+material = "water"
+min = [0.0, 0.0]
+max = [0.1, 0.1]
+)";
+  return s.str();
+}
+
+SimulateOptions options(const fs::path& case_file, const fs::path& out, int threads = 1) {
+  SimulateOptions o;
+  o.case_file = case_file;
+  o.out_dir = out;
+  o.threads = threads;
+  o.force_plain_progress = true;
+  return o;
+}
+
+struct Captured {
+  int code = -1;
+  std::string err;
+};
+
+// Runs runSimulate in-process with std::cerr captured.
+Captured simulate(const SimulateOptions& o) {
+  std::ostringstream err;
+  std::streambuf* old = std::cerr.rdbuf(err.rdbuf());
+  Captured r;
+  try {
+    r.code = runSimulate(o);
+  } catch (...) {
+    std::cerr.rdbuf(old);
+    throw;
+  }
+  std::cerr.rdbuf(old);
+  r.err = err.str();
+  return r;
+}
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+// Runs the real `mistfall` executable with `args` (already shell-quoted as needed).
+CliResult runCli(const std::string& args) {
+  static int counter = 0;
+  fs::create_directories(testRoot());
+  const std::string tag = std::to_string(counter++);
+  const fs::path out = testRoot() / ("cli_stdout_" + tag + ".txt");
+  const fs::path err = testRoot() / ("cli_stderr_" + tag + ".txt");
+  const std::string cmd = std::string("'") + MISTFALL_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
+                          err.string() + "' </dev/null";
+  const int status = std::system(cmd.c_str());
+  CliResult r;
+  r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+std::vector<fs::path> frameFiles(const fs::path& run) {
+  std::vector<fs::path> files;
+  if (!fs::exists(run / "frames")) return files;
+  for (const auto& e : fs::directory_iterator(run / "frames")) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Every byte of every regular file under `dir`, keyed by relative path.
+std::map<std::string, std::string> snapshotTree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  return files;
+}
+
+void expectSameDiagnostics(const std::vector<DiagnosticsRow>& a, const std::vector<DiagnosticsRow>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    SCOPED_TRACE("diagnostics row " + std::to_string(i));
+    EXPECT_EQ(a[i].time, b[i].time);
+    EXPECT_EQ(a[i].step, b[i].step);
+    EXPECT_EQ(a[i].dt, b[i].dt);
+    EXPECT_EQ(a[i].liquid, b[i].liquid);
+    EXPECT_EQ(a[i].gas, b[i].gas);
+    EXPECT_EQ(a[i].wall, b[i].wall);
+    EXPECT_EQ(a[i].dummy, b[i].dummy);
+    EXPECT_EQ(a[i].escaped, b[i].escaped);
+    EXPECT_EQ(a[i].max_speed, b[i].max_speed);
+    EXPECT_EQ(a[i].kinetic_energy, b[i].kinetic_energy);
+    EXPECT_EQ(a[i].ppe_iterations, b[i].ppe_iterations);
+    EXPECT_EQ(a[i].ppe_residual, b[i].ppe_residual);
+  }
+}
+
+void expectSamePvd(const fs::path& a, const fs::path& b) {
+  PvdCollection ca(a), cb(b);
+  ca.load();
+  cb.load();
+  ASSERT_EQ(ca.entries().size(), cb.entries().size());
+  for (std::size_t i = 0; i < ca.entries().size(); ++i) {
+    EXPECT_EQ(ca.entries()[i].time, cb.entries()[i].time) << "pvd entry " << i;
+    EXPECT_EQ(ca.entries()[i].file, cb.entries()[i].file) << "pvd entry " << i;
+  }
+}
+
+template <int D>
+void expectSameParticles(const Particles<D>& a, const Particles<D>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  const std::size_t n = a.size();
+  EXPECT_EQ(0, std::memcmp(a.position.data(), b.position.data(), n * sizeof(Vec<D>)));
+  EXPECT_EQ(0, std::memcmp(a.velocity.data(), b.velocity.data(), n * sizeof(Vec<D>)));
+  EXPECT_EQ(0, std::memcmp(a.pressure.data(), b.pressure.data(), n * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(a.number_density.data(), b.number_density.data(), n * sizeof(double)));
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.phase, b.phase);
+}
+
+constexpr std::size_t kDamBreakFluid = 200;
+
+// ---------------------------------------------------------------------------------------------------------
+// 1. Resume and thread-count independence
+
+TEST(SimulateResume, InterruptedAndResumedRunIsBitIdentical) {
+  const fs::path dir = freshDir("resume");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.1, 0.02));
+  const fs::path run_a = dir / "a", run_b = dir / "b";
+
+  ASSERT_EQ(0, simulate(options(case_file, run_a)).code);
+
+  SimulateOptions first = options(case_file, run_b);
+  first.until = 0.04;
+  ASSERT_EQ(0, simulate(first).code);
+  EXPECT_NEAR(readCheckpoint<2>(run_b / "checkpoint.bin").time, 0.04, 1e-12);
+  EXPECT_EQ(3u, frameFiles(run_b).size());
+
+  SimulateOptions resume;
+  resume.out_dir = run_b;
+  resume.resume = true;
+  resume.threads = 1;
+  resume.force_plain_progress = true;
+  const Captured resumed = simulate(resume);
+  ASSERT_EQ(0, resumed.code) << resumed.err;
+
+  // The checkpoints agree byte for byte, and so do the frames (the last one above all).
+  const std::string ckpt_a = slurp(run_a / "checkpoint.bin");
+  ASSERT_FALSE(ckpt_a.empty());
+  EXPECT_TRUE(ckpt_a == slurp(run_b / "checkpoint.bin")) << "final checkpoints differ";
+  EXPECT_NEAR(readCheckpoint<2>(run_a / "checkpoint.bin").time, 0.1, 1e-12);
+
+  const auto frames_a = frameFiles(run_a), frames_b = frameFiles(run_b);
+  ASSERT_EQ(6u, frames_a.size());
+  ASSERT_EQ(frames_a.size(), frames_b.size());
+  EXPECT_EQ("frame_00005.vtp", frames_a.back().filename().string());
+  for (std::size_t i = 0; i < frames_a.size(); ++i) {
+    EXPECT_EQ(frames_a[i].filename(), frames_b[i].filename());
+    EXPECT_TRUE(slurp(frames_a[i]) == slurp(frames_b[i])) << frames_a[i].filename() << " differs";
+  }
+
+  expectSameDiagnostics(DiagnosticsWriter::read(run_a / "diagnostics.csv"),
+                        DiagnosticsWriter::read(run_b / "diagnostics.csv"));
+  expectSamePvd(run_a / "frames.pvd", run_b / "frames.pvd");
+  PvdCollection pvd(run_b / "frames.pvd");
+  pvd.load();
+  EXPECT_EQ(6u, pvd.entries().size());
+}
+
+TEST(SimulateResume, ResumingAFinishedRunChangesNothing) {
+  const fs::path dir = freshDir("resume_finished");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  const fs::path run = dir / "run";
+  ASSERT_EQ(0, simulate(options(case_file, run)).code);
+  const auto before = snapshotTree(run);
+
+  SimulateOptions resume;
+  resume.out_dir = run;
+  resume.resume = true;
+  resume.threads = 1;
+  resume.force_plain_progress = true;
+  ASSERT_EQ(0, simulate(resume).code);
+  const auto after = snapshotTree(run);
+  ASSERT_EQ(before.size(), after.size());
+  for (const auto& [name, bytes] : before) {
+    if (name == "diagnostics.csv") continue;  // rewritten (same rows)
+    EXPECT_TRUE(after.count(name) && after.at(name) == bytes) << name << " changed";
+  }
+  EXPECT_EQ(DiagnosticsWriter::read(run / "diagnostics.csv").size(), 3u);
+}
+
+TEST(SimulateResume, ResumeWithoutCheckpointIsBadInput) {
+  const fs::path dir = freshDir("resume_missing");
+  SimulateOptions resume;
+  resume.out_dir = dir;
+  resume.resume = true;
+  resume.force_plain_progress = true;
+  const Captured r = simulate(resume);
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("checkpoint.bin"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(SimulateThreads, OneAndTwoThreadsGiveIdenticalRuns) {
+  const fs::path dir = freshDir("threads");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.1, 0.02));
+  ASSERT_EQ(0, simulate(options(case_file, dir / "t1", 1)).code);
+  ASSERT_EQ(0, simulate(options(case_file, dir / "t2", 2)).code);
+
+  EXPECT_TRUE(slurp(dir / "t1" / "checkpoint.bin") == slurp(dir / "t2" / "checkpoint.bin"))
+      << "checkpoints with 1 and 2 threads differ";
+  const auto f1 = frameFiles(dir / "t1"), f2 = frameFiles(dir / "t2");
+  ASSERT_EQ(f1.size(), f2.size());
+  for (std::size_t i = 0; i < f1.size(); ++i)
+    EXPECT_TRUE(slurp(f1[i]) == slurp(f2[i])) << f1[i].filename() << " differs between 1 and 2 threads";
+  expectSameDiagnostics(DiagnosticsWriter::read(dir / "t1" / "diagnostics.csv"),
+                        DiagnosticsWriter::read(dir / "t2" / "diagnostics.csv"));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 2. Particle bookkeeping
+
+TEST(SimulateParticles, CountsAreConservedInTheDamBreak) {
+  const fs::path dir = freshDir("conserve_dam");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.1, 0.02));
+  const fs::path run = dir / "run";
+  ASSERT_EQ(0, simulate(options(case_file, run)).code);
+
+  const auto rows = DiagnosticsWriter::read(run / "diagnostics.csv");
+  ASSERT_EQ(6u, rows.size());
+  EXPECT_GT(rows[0].wall, 0u);
+  EXPECT_GT(rows[0].dummy, 0u);
+  for (const auto& row : rows) {
+    SCOPED_TRACE("t = " + std::to_string(row.time));
+    EXPECT_EQ(kDamBreakFluid, row.liquid + row.gas + row.escaped);
+    EXPECT_EQ(rows[0].wall, row.wall);
+    EXPECT_EQ(rows[0].dummy, row.dummy);
+  }
+  EXPECT_GT(rows.back().max_speed, 0.0);
+  EXPECT_GT(rows.back().step, 0);
+
+  // The last frame holds the particles the last row counts.
+  const auto last = readVtp<2>(frameFiles(run).back());
+  EXPECT_EQ(rows.back().liquid + rows.back().gas, last.count(ParticleKind::Fluid));
+  EXPECT_EQ(rows.back().escaped, last.count(ParticleKind::Escaped));
+  EXPECT_EQ(rows.back().wall, last.count(ParticleKind::Wall));
+  EXPECT_EQ(rows.back().dummy, last.count(ParticleKind::Dummy));
+}
+
+TEST(SimulateParticles, EscapedParticlesAreStillCounted) {
+  const fs::path dir = freshDir("conserve_escape");
+  const fs::path case_file = writeCase(dir, "case.toml", fallingBlockCase(1.0, 0.1));
+  const fs::path run = dir / "run";
+  const Captured r = simulate(options(case_file, run));
+  ASSERT_EQ(0, r.code) << r.err;
+
+  const auto rows = DiagnosticsWriter::read(run / "diagnostics.csv");
+  ASSERT_EQ(6u, rows.size());
+  EXPECT_EQ(0u, rows.front().escaped);
+  EXPECT_GT(rows.back().escaped, 0u) << "the case should let some water fall out of the domain";
+  for (const auto& row : rows) {
+    SCOPED_TRACE("t = " + std::to_string(row.time));
+    EXPECT_EQ(100u, row.liquid + row.gas + row.escaped);
+    EXPECT_EQ(0u, row.wall);
+    EXPECT_EQ(0u, row.dummy);
+  }
+  const auto last = readVtp<2>(frameFiles(run).back());
+  EXPECT_EQ(100u, last.size());
+  EXPECT_EQ(rows.back().escaped, last.count(ParticleKind::Escaped));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 3. Bad input writes nothing
+
+struct BadCase {
+  const char* label;
+  std::string text;
+  const char* must_mention;
+};
+
+std::vector<BadCase> badCases() {
+  std::string overlapping = damBreakCase(0.1, 0.02);
+  overlapping += R"(
+[[region]]
+name = "second_column"
+material = "water"
+min = [0.05, 0.1]
+max = [0.15, 0.25]
+)";
+  return {
+      {"out_of_range", damBreakCase(0.1, 0.02, "courant = 2\n"), "numerics.courant"},
+      {"unknown_key", damBreakCase(0.1, 0.02, "courrant = 0.1\n"), "numerics.courrant"},
+      {"overlap", overlapping, "overlaps"},
+  };
+}
+
+TEST(SimulateBadInput, ReturnsOneAndCreatesNoRunDirectory) {
+  const fs::path dir = freshDir("bad_input");
+  for (const auto& bad : badCases()) {
+    SCOPED_TRACE(bad.label);
+    const fs::path case_file = writeCase(dir, std::string(bad.label) + ".toml", bad.text);
+    const fs::path out = dir / (std::string(bad.label) + "_parent") / "run";
+    const Captured r = simulate(options(case_file, out));
+    EXPECT_EQ(1, r.code);
+    EXPECT_NE(r.err.find(bad.must_mention), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(out.parent_path()));
+  }
+  // A bad --until is bad input too.
+  const fs::path good = writeCase(dir, "good.toml", damBreakCase(0.1, 0.02));
+  SimulateOptions o = options(good, dir / "bad_until");
+  o.until = -1.0;
+  EXPECT_EQ(1, simulate(o).code);
+  EXPECT_FALSE(fs::exists(dir / "bad_until"));
+  // So is a missing case file.
+  const Captured missing = simulate(options(dir / "no_such_case.toml", dir / "missing_case"));
+  EXPECT_EQ(1, missing.code);
+  EXPECT_NE(missing.err.find("no_such_case.toml"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(dir / "missing_case"));
+}
+
+TEST(CliBadInput, ExitsOneNamesTheKeyAndCreatesNothing) {
+  const fs::path dir = freshDir("cli_bad_input");
+  for (const auto& bad : badCases()) {
+    SCOPED_TRACE(bad.label);
+    const fs::path case_file = writeCase(dir, std::string(bad.label) + ".toml", bad.text);
+    const fs::path out = dir / (std::string(bad.label) + "_run");
+    const CliResult r = runCli("simulate " + quoted(case_file) + " --out " + quoted(out) + " --threads 1");
+    EXPECT_EQ(1, r.code) << r.err;
+    EXPECT_NE(r.err.find(bad.must_mention), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 4. Run-directory protection
+
+TEST(SimulateOverwrite, RefusesANonEmptyRunDirectoryAndReplacesItWithOverwrite) {
+  const fs::path dir = freshDir("overwrite");
+  const fs::path long_case = writeCase(dir, "long.toml", damBreakCase(0.1, 0.02));
+  const fs::path short_case = writeCase(dir, "short.toml", damBreakCase(0.04, 0.02));
+  const fs::path run = dir / "run";
+
+  // An existing empty directory is fine.
+  fs::create_directories(run);
+  ASSERT_EQ(0, simulate(options(long_case, run)).code);
+  ASSERT_EQ(6u, frameFiles(run).size());
+  const auto before = snapshotTree(run);
+
+  // A second run into it is refused, and nothing changes.
+  const Captured refused = simulate(options(short_case, run));
+  EXPECT_EQ(1, refused.code);
+  EXPECT_NE(refused.err.find("overwrite"), std::string::npos) << refused.err;
+  EXPECT_TRUE(before == snapshotTree(run)) << "a refused run changed the run directory";
+
+  // A directory holding anything at all (not only a run) is refused too.
+  const fs::path other = dir / "other";
+  fs::create_directories(other);
+  std::ofstream(other / "notes.txt") << "keep me\n";
+  EXPECT_EQ(1, simulate(options(short_case, other)).code);
+  EXPECT_EQ("keep me\n", slurp(other / "notes.txt"));
+  EXPECT_EQ(1u, snapshotTree(other).size());
+
+  // With overwrite the run is replaced: the stale frames of the longer run are gone.
+  SimulateOptions o = options(short_case, run);
+  o.overwrite = true;
+  const Captured replaced = simulate(o);
+  ASSERT_EQ(0, replaced.code) << replaced.err;
+  EXPECT_EQ(3u, frameFiles(run).size());
+  EXPECT_EQ(3u, DiagnosticsWriter::read(run / "diagnostics.csv").size());
+  PvdCollection pvd(run / "frames.pvd");
+  pvd.load();
+  EXPECT_EQ(3u, pvd.entries().size());
+  EXPECT_NEAR(readCheckpoint<2>(run / "checkpoint.bin").time, 0.04, 1e-12);
+  EXPECT_EQ(slurp(short_case), slurp(run / "case.toml"));
+}
+
+TEST(SimulateOverwrite, AnOutputPathThatIsAFileIsBadInput) {
+  const fs::path dir = freshDir("out_is_file");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  const fs::path empty_file = dir / "empty_file", full_file = dir / "full_file";
+  std::ofstream(empty_file).close();
+  std::ofstream(full_file) << "data\n";
+  for (bool overwrite : {false, true}) {
+    SCOPED_TRACE(overwrite ? "overwrite" : "no overwrite");
+    for (const fs::path& out : {empty_file, full_file, full_file / "run"}) {
+      SCOPED_TRACE(out.string());
+      SimulateOptions o = options(case_file, out);
+      o.overwrite = overwrite;
+      const Captured r = simulate(o);
+      EXPECT_EQ(1, r.code) << r.err;
+      EXPECT_FALSE(r.err.empty());
+    }
+  }
+  EXPECT_TRUE(fs::is_regular_file(empty_file));
+  EXPECT_EQ("", slurp(empty_file));
+  EXPECT_EQ("data\n", slurp(full_file));
+
+  const CliResult cli = runCli("simulate " + quoted(case_file) + " --out " + quoted(full_file / "run"));
+  EXPECT_EQ(1, cli.code) << cli.err;
+  EXPECT_EQ("data\n", slurp(full_file));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 5. Divergence
+
+void expectDivergedRunIsReadable(const fs::path& run) {
+  PvdCollection pvd(run / "frames.pvd");
+  pvd.load();
+  ASSERT_GE(pvd.entries().size(), 2u);
+  const auto frames = frameFiles(run);
+  ASSERT_EQ(pvd.entries().size(), frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    double t = -1;
+    const auto p = readVtp<2>(run / pvd.entries()[i].file, &t);
+    EXPECT_EQ(100u, p.size());
+    EXPECT_NEAR(0.02 * static_cast<double>(i), t, 1e-12);
+    EXPECT_EQ(pvd.entries()[i].time, t);
+  }
+  const auto ckpt = readCheckpoint<2>(run / "checkpoint.bin");
+  EXPECT_EQ(pvd.entries().back().time, ckpt.time);
+  EXPECT_EQ(static_cast<int>(frames.size()), ckpt.next_frame);
+  const auto rows = DiagnosticsWriter::read(run / "diagnostics.csv");
+  ASSERT_EQ(frames.size(), rows.size());
+  EXPECT_EQ(ckpt.time, rows.back().time);
+  EXPECT_EQ(ckpt.step, rows.back().step);
+  for (const auto& e : fs::recursive_directory_iterator(run))
+    EXPECT_NE(".tmp", e.path().extension().string()) << e.path();
+}
+
+TEST(SimulateDivergence, StopsWithCodeThreeAndKeepsTheFrames) {
+  const fs::path dir = freshDir("diverge");
+  const fs::path case_file = writeCase(dir, "case.toml", fallingBlockCase(0.1, 0.2));
+  const fs::path run = dir / "run";
+  const Captured r = simulate(options(case_file, run));
+  EXPECT_EQ(3, r.code) << r.err;
+  EXPECT_NE(r.err.find("diverged at t ="), std::string::npos) << r.err;
+  expectDivergedRunIsReadable(run);
+  // It diverged between the last frame and the next output time.
+  const auto ckpt = readCheckpoint<2>(run / "checkpoint.bin");
+  EXPECT_LT(ckpt.time, 0.2);
+}
+
+TEST(CliDivergence, ReportsTimeAndStepOnStderr) {
+  const fs::path dir = freshDir("cli_diverge");
+  const fs::path case_file = writeCase(dir, "case.toml", fallingBlockCase(0.1, 0.2));
+  const fs::path run = dir / "run";
+  const CliResult r =
+      runCli("simulate " + quoted(case_file) + " --out " + quoted(run) + " --threads 1 --plain-progress");
+  EXPECT_EQ(3, r.code) << r.err;
+  const auto at = r.err.find("diverged at t = ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  // A number follows "t = ", then the step.
+  const std::string rest = r.err.substr(at + std::strlen("diverged at t = "));
+  char* end = nullptr;
+  const double t = std::strtod(rest.c_str(), &end);
+  EXPECT_NE(end, rest.c_str()) << r.err;
+  const auto ckpt = readCheckpoint<2>(run / "checkpoint.bin");
+  EXPECT_GT(t, ckpt.time);
+  EXPECT_LT(t, ckpt.time + 0.02 + 1e-9);
+  EXPECT_NE(rest.find("step"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("max_escaped_fraction"), std::string::npos) << r.err;
+  expectDivergedRunIsReadable(run);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 6. Command line
+
+TEST(CliVersion, PrintsTheVersion) {
+  const CliResult r = runCli("--version");
+  EXPECT_EQ(0, r.code);
+  EXPECT_NE(r.out.find(MISTFALL_VERSION), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mistfall"), std::string::npos) << r.out;
+}
+
+TEST(CliHelp, SimulateHelpMentionsResume) {
+  const CliResult r = runCli("simulate --help");
+  EXPECT_EQ(0, r.code);
+  EXPECT_NE(r.out.find("--resume"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--out"), std::string::npos) << r.out;
+}
+
+TEST(CliArguments, CaseFileAndResumeTogetherIsAnError) {
+  const fs::path dir = freshDir("cli_both");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  const fs::path run = dir / "run";
+  fs::create_directories(run);
+  const CliResult r = runCli("simulate " + quoted(case_file) + " --resume " + quoted(run));
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(run));
+}
+
+TEST(CliArguments, MissingCaseFileIsAnError) {
+  const fs::path dir = freshDir("cli_missing");
+  const CliResult r = runCli("simulate " + quoted(dir / "nope.toml") + " --out " + quoted(dir / "run"));
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("nope.toml"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "run"));
+}
+
+TEST(CliArguments, MissingOutIsAnError) {
+  const fs::path dir = freshDir("cli_no_out");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  const CliResult r = runCli("simulate " + quoted(case_file));
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+}
+
+TEST(CliArguments, UnknownOptionIsAnError) {
+  const CliResult r = runCli("simulate --no-such-option");
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("no-such-option"), std::string::npos) << r.err;
+}
+
+TEST(CliArguments, NoSubcommandIsAnError) {
+  const CliResult r = runCli("");
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find("subcommand"), std::string::npos) << r.err;
+}
+
+TEST(CliSimulate, RunsAndResumesThroughTheExecutable) {
+  const fs::path dir = freshDir("cli_run");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  const fs::path run = dir / "run";
+  const CliResult first = runCli("simulate " + quoted(case_file) + " --out " + quoted(run) +
+                                 " --until 0.02 --threads 1 --plain-progress");
+  ASSERT_EQ(0, first.code) << first.err;
+  EXPECT_EQ(2u, frameFiles(run).size());
+  const CliResult resumed = runCli("simulate --resume " + quoted(run) + " --threads 1 --plain-progress");
+  ASSERT_EQ(0, resumed.code) << resumed.err;
+  EXPECT_EQ(3u, frameFiles(run).size());
+  EXPECT_NEAR(readCheckpoint<2>(run / "checkpoint.bin").time, 0.04, 1e-12);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// 7. ASCII frames
+
+TEST(SimulateAscii, AsciiFramesReadBackEqualToBinaryOnes) {
+  const fs::path dir = freshDir("ascii");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.04, 0.02));
+  ASSERT_EQ(0, simulate(options(case_file, dir / "binary")).code);
+  SimulateOptions o = options(case_file, dir / "ascii");
+  o.ascii = true;
+  ASSERT_EQ(0, simulate(o).code);
+
+  const auto binary = frameFiles(dir / "binary"), ascii = frameFiles(dir / "ascii");
+  ASSERT_EQ(3u, binary.size());
+  ASSERT_EQ(binary.size(), ascii.size());
+  for (std::size_t i = 0; i < binary.size(); ++i) {
+    SCOPED_TRACE(binary[i].filename().string());
+    const std::string ascii_text = slurp(ascii[i]);
+    EXPECT_NE(ascii_text.find("format=\"ascii\""), std::string::npos);
+    EXPECT_EQ(ascii_text.find("AppendedData"), std::string::npos);
+    EXPECT_NE(slurp(binary[i]).find("AppendedData"), std::string::npos);
+    double tb = -1, ta = -2;
+    const auto pb = readVtp<2>(binary[i], &tb);
+    const auto pa = readVtp<2>(ascii[i], &ta);
+    EXPECT_EQ(tb, ta);
+    // ASCII doubles are written with 17 significant digits, so they read back exactly.
+    expectSameParticles(pb, pa);
+  }
+  // The checkpoints do not depend on the frame format.
+  EXPECT_TRUE(slurp(dir / "binary" / "checkpoint.bin") == slurp(dir / "ascii" / "checkpoint.bin"));
+}
+
+}  // namespace
