@@ -130,6 +130,40 @@ TEST(CaseFile, ReadsEveryKey) {
   EXPECT_EQ(c.regions[1].name, "box");
 }
 
+TEST(CaseFile, PressureSourceKeys) {
+  // Defaults: the paper's standard source, gamma = 0.01.
+  const CaseConfig d = parseCase(Parts{}.text(), "t.toml");
+  EXPECT_EQ(d.numerics.pressure_source, PressureSource::Standard);
+  EXPECT_DOUBLE_EQ(d.numerics.source_relaxation, 0.01);
+  EXPECT_EQ(NumericsConfig{}.pressure_source, PressureSource::Standard);
+  EXPECT_DOUBLE_EQ(NumericsConfig{}.source_relaxation, 0.01);
+
+  Parts p;
+  p.numerics += "pressure_source = \"mixed\"\nsource_relaxation = 0.05\n";
+  CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_EQ(c.numerics.pressure_source, PressureSource::Mixed);
+  EXPECT_DOUBLE_EQ(c.numerics.source_relaxation, 0.05);
+
+  p = Parts{};
+  p.numerics += "pressure_source = \"standard\"\nsource_relaxation = 1\n";  // upper bound is closed
+  c = parseCase(p.text(), "t.toml");
+  EXPECT_EQ(c.numerics.pressure_source, PressureSource::Standard);
+  EXPECT_DOUBLE_EQ(c.numerics.source_relaxation, 1.0);
+
+  p = Parts{};
+  p.numerics += "pressure_source = \"fast\"\n";
+  std::string msg = errorOf(p.text());
+  EXPECT_HAS(msg, "cases/x.toml: numerics.pressure_source = \"fast\" is not allowed");
+  EXPECT_HAS(msg, "allowed \"standard\" or \"mixed\"");
+
+  for (const std::string v : {"0", "2"}) {
+    p = Parts{};
+    p.numerics += "source_relaxation = " + v + "\n";
+    msg = errorOf(p.text());
+    EXPECT_EQ(msg, "cases/x.toml: numerics.source_relaxation = " + v + " is out of range; allowed (0, 1]");
+  }
+}
+
 TEST(CaseFile, SyntaxErrorNamesFileLineAndColumn) {
   const std::string msg = errorOf("[case]\nname = \"t\"\ndimension = = 2\n");
   EXPECT_HAS(msg, "cases/x.toml");
