@@ -19,7 +19,7 @@ namespace {
 // Fluid particles = (a/l0) * (2a/l0); a chosen so that all particles (with walls) are about `target`.
 CaseConfig damBreakCase(int target_particles, const char* solver) {
   const double l0 = 0.002;
-  const int columns = static_cast<int>(std::lround(std::sqrt(target_particles * 0.8 / 2.0)));
+  const int columns = static_cast<int>(std::lround(std::sqrt(target_particles * 0.88 / 2.0)));
   const double a = columns * l0;
   const double wall = 4 * l0;
   std::ostringstream toml;

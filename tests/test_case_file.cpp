@@ -79,7 +79,7 @@ TEST(CaseFile, DefaultsApplied) {
   EXPECT_DOUBLE_EQ(c.numerics.surface_threshold, def.surface_threshold);
   EXPECT_DOUBLE_EQ(c.numerics.collision_distance, def.collision_distance);
   EXPECT_DOUBLE_EQ(c.numerics.collision_restitution, def.collision_restitution);
-  EXPECT_EQ(c.numerics.pressure_solver, PressureSolverKind::EigenIccg);
+  EXPECT_EQ(c.numerics.pressure_solver, PressureSolverKind::HypreAmg);
   EXPECT_DOUBLE_EQ(c.numerics.solver_tolerance, def.solver_tolerance);
   EXPECT_EQ(c.numerics.solver_max_iterations, def.solver_max_iterations);
   EXPECT_DOUBLE_EQ(c.numerics.max_escaped_fraction, def.max_escaped_fraction);
@@ -109,7 +109,7 @@ TEST(CaseFile, ReadsEveryKey) {
               "sound_speed = 15.0\n";
   p.numerics = "particle_spacing = 0.1\nradius_number_density = 2.5\nradius_laplacian = 4\ncourant = 0.1\n"
                "dt_max = 0.01\ndt_min = 1e-6\nsurface_threshold = 0.9\ncollision_distance = 0.0\n"
-               "collision_restitution = 1\npressure_solver = \"amg\"\nsolver_tolerance = 1e-3\n"
+               "collision_restitution = 1\npressure_solver = \"iccg\"\nsolver_tolerance = 1e-3\n"
                "solver_max_iterations = 50\nmax_escaped_fraction = 1\n";
   p.output = "end_time = 2\ninterval = 2\n";
   p.regions += "velocity = [0.5, -1]\n[[region]]\nname = \"box\"\nmaterial = \"wall\"\nmin = [0.5, 0]\nmax = [1, 1]\n";
@@ -121,7 +121,7 @@ TEST(CaseFile, ReadsEveryKey) {
   EXPECT_DOUBLE_EQ(c.numerics.radius_laplacian, 4.0);
   EXPECT_DOUBLE_EQ(c.numerics.dt_min, 1e-6);
   EXPECT_DOUBLE_EQ(c.numerics.collision_distance, 0.0);
-  EXPECT_EQ(c.numerics.pressure_solver, PressureSolverKind::HypreAmg);
+  EXPECT_EQ(c.numerics.pressure_solver, PressureSolverKind::EigenIccg);
   EXPECT_EQ(c.numerics.solver_max_iterations, 50);
   EXPECT_DOUBLE_EQ(c.output.interval, 2.0);
   ASSERT_EQ(c.regions.size(), 2u);

@@ -77,7 +77,6 @@ gravity = [0.0, -9.81]
 [numerics]
 particle_spacing = 0.01
 dt_max = 1.0e-3
-pressure_solver = "iccg"
 max_escaped_fraction = 0.05
 )" << numerics_extra
     << "\n[output]\nend_time = " << end_time << "\ninterval = " << interval << R"(

@@ -53,7 +53,7 @@ struct NumericsConfig {
   double collision_restitution = 0.2;   // restitution of the collision model
   PressureSource pressure_source = PressureSource::Standard;
   double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
-  PressureSolverKind pressure_solver = PressureSolverKind::EigenIccg;
+  PressureSolverKind pressure_solver = PressureSolverKind::HypreAmg;
   double solver_tolerance = 1.0e-8;     // relative residual |b - Ax| / |b|
   int solver_max_iterations = 1000;
   double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
