@@ -13,35 +13,15 @@
 #include "io/diagnostics.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
 
 namespace {
 
-fs::path testRoot() { return fs::temp_directory_path() / ("mistfall_test_io_" + std::to_string(::getpid())); }
-
-// Removes this process's scratch folder after all tests.
-class ScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(testRoot(), ec);
-  }
-};
-[[maybe_unused]] const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
-
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = testRoot() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using test_support::freshDir;
+using test_support::slurp;
 
 bool noTmpFiles(const fs::path& dir) {
   for (const auto& e : fs::recursive_directory_iterator(dir))

@@ -22,36 +22,15 @@
 #include "io/diagnostics.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
 
 namespace {
 
-fs::path testRoot() { return fs::temp_directory_path() / ("mistfall_test_simulate_" + std::to_string(::getpid())); }
-
-// Removes this process's scratch folder after all tests.
-class ScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(testRoot(), ec);
-  }
-};
-[[maybe_unused]] const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
-
-// A fresh, empty scratch folder for one test.
-fs::path freshDir(const std::string& name) {
-  const fs::path dir = testRoot() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
+using test_support::freshDir;
+using test_support::slurp;
 
 fs::path writeCase(const fs::path& dir, const std::string& name, const std::string& text) {
   const fs::path file = dir / name;
@@ -173,10 +152,10 @@ struct CliResult {
 // Runs the real `mistfall` executable with `args` (already shell-quoted as needed).
 CliResult runCli(const std::string& args) {
   static int counter = 0;
-  fs::create_directories(testRoot());
+  fs::create_directories(test_support::scratchRoot());
   const std::string tag = std::to_string(counter++);
-  const fs::path out = testRoot() / ("cli_stdout_" + tag + ".txt");
-  const fs::path err = testRoot() / ("cli_stderr_" + tag + ".txt");
+  const fs::path out = test_support::scratchRoot() / ("cli_stdout_" + tag + ".txt");
+  const fs::path err = test_support::scratchRoot() / ("cli_stderr_" + tag + ".txt");
   const std::string cmd = std::string("'") + MISTFALL_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
                           err.string() + "' </dev/null";
   const int status = std::system(cmd.c_str());

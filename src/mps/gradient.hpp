@@ -7,9 +7,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/pair_loop.hpp"
 #include "mps/reference_density.hpp"
-#include "mps/weight.hpp"
 
 namespace mistfall {
 
@@ -29,14 +28,9 @@ Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std:
     }
   }
   Vec<D> sum = Vec<D>::Zero();
-  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-    const auto j = nl.indices[s];
-    if (!include(j)) continue;
-    const Vec<D> rij = position[j] - position[i];
-    const double r2 = rij.squaredNorm();
-    const double w = weight(std::sqrt(r2), re);
-    if (w > 0.0) sum += rij * ((phi[j] - phi_hat) * w / r2);
-  }
+  forEachPairWithin<D>(i, position, nl, re, include, [&](std::int32_t j, const Vec<D>& rij, double r2, double w) {
+    sum += rij * ((phi[j] - phi_hat) * w / r2);
+  });
   return sum * (double(D) / c.n0);
 }
 

@@ -5,9 +5,8 @@
 
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/pair_loop.hpp"
 #include "mps/reference_density.hpp"
-#include "mps/weight.hpp"
 
 namespace mistfall {
 
@@ -16,12 +15,8 @@ template <int D, class T, class Include>
 T laplacianAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<T>& phi,
               const NeighborList& nl, const MpsConstants& c, Include&& include) {
   T sum = phi[i] * 0.0;
-  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-    const auto j = nl.indices[s];
-    if (!include(j)) continue;
-    const double w = weight((position[j] - position[i]).norm(), c.re_laplacian);
-    if (w > 0.0) sum += (phi[j] - phi[i]) * w;
-  }
+  forEachPairWithin<D>(i, position, nl, c.re_laplacian, include,
+                       [&](std::int32_t j, const Vec<D>&, double, double w) { sum += (phi[j] - phi[i]) * w; });
   return sum * c.laplacianFactor();
 }
 
