@@ -8,37 +8,14 @@
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
+#include "support/case_text.hpp"
 
 using namespace mistfall;
 
+using test_support::errorOf;
+using test_support::Parts;
+
 namespace {
-
-// A minimal valid 2D case, assembled from replaceable sections.
-struct Parts {
-  std::string header = "name = \"t\"\ndimension = 2\n";
-  std::string domain = "min = [0.0, 0.0]\nmax = [1.0, 1.0]\n";
-  std::string physics = "";
-  std::string numerics = "particle_spacing = 0.1\n";
-  std::string output = "end_time = 1.0\n";
-  std::string regions = "[[region]]\nname = \"w\"\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\n";
-  std::string text() const {
-    return "[case]\n" + header + "[domain]\n" + domain + physics + "[numerics]\n" + numerics + "[output]\n" +
-           output + regions;
-  }
-};
-
-// Parses `text` expecting a CaseError; returns its message.
-std::string errorOf(const std::string& text) {
-  try {
-    parseCase(text, "cases/x.toml");
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no CaseError for:\n" << text;
-  return "";
-}
-
-#define EXPECT_HAS(msg, sub) EXPECT_NE((msg).find(sub), std::string::npos) << "missing '" << (sub) << "' in: " << (msg)
 
 std::string source(const std::string& rel) { return std::string(MISTFALL_SOURCE_DIR) + "/" + rel; }
 

@@ -15,12 +15,22 @@ struct Box {
   std::array<double, 3> max{0.0, 0.0, 0.0};
 };
 
-enum class Material { Water, Wall };
+// Gas is the second fluid phase (air). Which material a lattice point gets where regions overlap is
+// described in docs/case-file.md ("Overlapping regions"): walls always win; among water and gas regions
+// the one declared last wins.
+enum class Material { Water, Wall, Gas };
+
+// Box: the points of `box`. Circle: a disc (2D) or sphere (3D) of `radius` around `center`.
+enum class RegionShape { Box, Circle };
 
 struct Region {
   std::string name;
   Material material = Material::Water;
+  RegionShape shape = RegionShape::Box;
+  // Box shape: the region. Circle shape: its bounding box center -/+ radius (set by the parser).
   Box box;
+  std::array<double, 3> center{0.0, 0.0, 0.0};  // circle only
+  double radius = 0.0;                           // circle only
   std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};
 };
 
@@ -34,7 +44,13 @@ struct PhaseProperties {
 struct PhysicsConfig {
   std::array<double, 3> gravity{0.0, -9.81, 0.0};  // [m/s^2]
   PhaseProperties liquid{};
+  // Air; weakly compressible (finite sound speed: eq. (17)).
+  PhaseProperties gas{1.2, 1.5e-5, 340.0};
 };
+
+// Properties of phase `phase_index`, numbered as the Phase enum of mps/particles.hpp: 0 = liquid,
+// 1 = gas. Throws std::out_of_range for any other index.
+const PhaseProperties& phaseProperties(const PhysicsConfig& physics, int phase_index);
 
 enum class PressureSolverKind { EigenIccg, HypreAmg };
 // Source term of the PPE. Standard: eq. (9), -rho/dt^2 (n* - n0)/n0 (the paper's original MPS).

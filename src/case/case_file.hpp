@@ -24,8 +24,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
 CaseConfig loadCaseFile(const std::filesystem::path& path);
 
 namespace detail {
-// Region geometry checks run by parseCase (bounds, inside domain, non-empty lattice, overlaps, a water
-// region exists); implemented in case_regions.cpp. Throws CaseError prefixed with `source_name`.
+// Region geometry checks run by parseCase (bounds, inside domain, non-empty lattice, water overlaps, every
+// water or gas region keeping a point after overlaps are resolved, a water region exists); implemented in
+// case_regions.cpp. Throws CaseError prefixed with `source_name`.
 void validateRegions(const CaseConfig& c, const std::string& source_name);
 // Shortest round-trip text of a number for messages: fixed notation for 1e-4 <= |v| < 1e6, else "1e-8".
 std::string formatNumber(double v);

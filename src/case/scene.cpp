@@ -1,5 +1,6 @@
-// Builds the initial particles of a case on the lattice described in scene.hpp, and classifies solid
-// lattice points into Wall (touching a non-solid point) and Dummy (buried inside the wall).
+// Builds the initial particles of a case on the lattice described in scene.hpp (resolving overlaps of
+// water, gas and wall regions), and classifies solid lattice points into Wall (touching a non-solid point)
+// and Dummy (buried inside the wall).
 #include "case/scene.hpp"
 
 #include <algorithm>
@@ -74,12 +75,93 @@ Index unpack(std::uint64_t key) {
           static_cast<std::int64_t>((key >> kBits) & kMask), static_cast<std::int64_t>(key & kMask)};
 }
 
+double latticeCoordinate(const CaseConfig& c, const Index& i, int k) {
+  return c.domain.min[k] + (static_cast<double>(i[k]) + 0.5) * c.numerics.particle_spacing;
+}
+
 template <int D>
 Vec<D> latticePoint(const CaseConfig& c, const Index& i) {
   Vec<D> x;
-  for (int k = 0; k < D; ++k)
-    x[k] = c.domain.min[k] + (static_cast<double>(i[k]) + 0.5) * c.numerics.particle_spacing;
+  for (int k = 0; k < D; ++k) x[k] = latticeCoordinate(c, i, k);
   return x;
+}
+
+// Calls f(index) for every index of the range in the case's dimension.
+template <class F>
+void forEachIndexIn(int dim, const IndexRange& r, F&& f) {
+  if (dim == 3) {
+    forEachIndex<3>(r, f);
+  } else {
+    forEachIndex<2>(r, f);
+  }
+}
+
+// The lattice points of one region: a candidate index range (exact for a box, the bounding box grown by
+// one spacing for a circle) and the membership test.
+struct RegionLattice {
+  const CaseConfig* c = nullptr;
+  const Region* region = nullptr;
+  IndexRange range;
+  double limit2 = 0.0;  // circle: (radius + tolerance)^2
+
+  bool contains(const Index& i) const {
+    for (int k = 0; k < c->dimension; ++k)
+      if (i[k] < range.lo[k] || i[k] >= range.hi[k]) return false;
+    if (region->shape == RegionShape::Box) return true;
+    double d2 = 0.0;
+    for (int k = 0; k < c->dimension; ++k) {
+      const double d = latticeCoordinate(*c, i, k) - region->center[k];
+      d2 += d * d;
+    }
+    return d2 <= limit2;
+  }
+};
+
+RegionLattice latticeOf(const CaseConfig& c, const Region& r) {
+  RegionLattice v;
+  v.c = &c;
+  v.region = &r;
+  if (r.shape == RegionShape::Box) {
+    v.range = boxRange(c, r.box);
+  } else {
+    const double l0 = c.numerics.particle_spacing;
+    Box grown;
+    for (int k = 0; k < c.dimension; ++k) {
+      grown.min[k] = r.center[k] - r.radius - l0;
+      grown.max[k] = r.center[k] + r.radius + l0;
+    }
+    v.range = boxRange(c, grown);
+    const double limit = r.radius + kTolerance * l0;
+    v.limit2 = limit * limit;
+  }
+  return v;
+}
+
+bool isFluid(Material m) { return m == Material::Water || m == Material::Gas; }
+
+// Calls f(index) for every lattice point region `r` contributes after overlaps are resolved (scene.hpp).
+template <class F>
+void forEachRegionPoint(const CaseConfig& c, const std::vector<RegionLattice>& all, std::size_t r, F&& f) {
+  const RegionLattice& self = all[r];
+  const bool fluid = isFluid(self.region->material);
+  forEachIndexIn(c.dimension, self.range, [&](const Index& i) {
+    if (!self.contains(i)) return;
+    if (fluid) {
+      for (std::size_t j = 0; j < all.size(); ++j) {
+        const Material m = all[j].region->material;
+        const bool overrides = m == Material::Wall || (j > r && isFluid(m));
+        if (overrides && all[j].contains(i)) return;
+      }
+    }
+    f(i);
+  });
+}
+
+std::vector<RegionLattice> latticesOf(const CaseConfig& c) {
+  std::vector<RegionLattice> v;
+  v.reserve(c.regions.size());
+  for (const Region& r : c.regions) v.push_back(latticeOf(c, r));
+  return v;
 }
 
 }  // namespace
@@ -97,6 +179,21 @@ std::size_t countLatticePoints(const CaseConfig& c, const Box& b) {
   return n;
 }
 
+std::size_t countLatticePoints(const CaseConfig& c, const Region& r) {
+  if (r.shape == RegionShape::Box) return countLatticePoints(c, r.box);
+  const RegionLattice v = latticeOf(c, r);
+  std::size_t n = 0;
+  forEachIndexIn(c.dimension, v.range, [&](const Index& i) { n += v.contains(i); });
+  return n;
+}
+
+std::vector<std::size_t> regionParticleCounts(const CaseConfig& c) {
+  const std::vector<RegionLattice> all = latticesOf(c);
+  std::vector<std::size_t> n(c.regions.size(), 0);
+  for (std::size_t r = 0; r < c.regions.size(); ++r) forEachRegionPoint(c, all, r, [&](const Index&) { ++n[r]; });
+  return n;
+}
+
 template <int D>
 Particles<D> buildParticles(const CaseConfig& c) {
   if (c.dimension != D)
@@ -110,37 +207,41 @@ Particles<D> buildParticles(const CaseConfig& c) {
   }
 
   Particles<D> p;
-  std::size_t water_count = 0;
-  for (const Region& r : c.regions)
-    if (r.material == Material::Water) water_count += countLatticePoints(c, r.box);
-
-  // Water: one region after another, each in lexicographic lattice order.
-  for (const Region& r : c.regions) {
-    if (r.material != Material::Water) continue;
-    Vec<D> u;
-    for (int k = 0; k < D; ++k) u[k] = r.initial_velocity[k];
-    forEachIndex<D>(boxRange(c, r.box), [&](const Index& i) {
-      p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, Phase::Liquid);
-    });
-  }
+  const std::vector<RegionLattice> all = latticesOf(c);
+  std::size_t fluid_count = 0;
+  for (std::size_t r = 0; r < c.regions.size(); ++r)
+    if (isFluid(c.regions[r].material)) forEachRegionPoint(c, all, r, [&](const Index&) { ++fluid_count; });
 
   // Walls: the union of all wall regions, sorted and deduplicated.
   std::vector<std::uint64_t> solid;
-  for (const Region& r : c.regions) {
-    if (r.material != Material::Wall) continue;
-    forEachIndex<D>(boxRange(c, r.box), [&](const Index& i) { solid.push_back(pack(i)); });
+  for (std::size_t r = 0; r < c.regions.size(); ++r) {
+    if (c.regions[r].material != Material::Wall) continue;
+    forEachRegionPoint(c, all, r, [&](const Index& i) { solid.push_back(pack(i)); });
   }
   std::sort(solid.begin(), solid.end());
   solid.erase(std::unique(solid.begin(), solid.end()), solid.end());
   const std::unordered_set<std::uint64_t> is_solid(solid.begin(), solid.end());
 
-  const std::size_t total = water_count + solid.size();
+  const std::size_t total = fluid_count + solid.size();
   p.position.reserve(total);
   p.velocity.reserve(total);
   p.pressure.reserve(total);
   p.number_density.reserve(total);
   p.kind.reserve(total);
   p.phase.reserve(total);
+
+  // Water, then gas: one region after another in file order, each in lexicographic lattice order.
+  for (const Material m : {Material::Water, Material::Gas}) {
+    const Phase phase = m == Material::Water ? Phase::Liquid : Phase::Gas;
+    for (std::size_t r = 0; r < c.regions.size(); ++r) {
+      if (c.regions[r].material != m) continue;
+      Vec<D> u;
+      for (int k = 0; k < D; ++k) u[k] = c.regions[r].initial_velocity[k];
+      forEachRegionPoint(c, all, r, [&](const Index& i) {
+        p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, phase);
+      });
+    }
+  }
 
   IndexRange around;
   for (int k = 0; k < D; ++k) {

@@ -151,6 +151,11 @@ int runSimulate(const SimulateOptions& options) {
         throw CaseError("output directory " + options.out_dir.string() +
                         " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
     }
+    for (std::size_t r = 0; r < config.regions.size(); ++r)
+      if (config.regions[r].material == Material::Gas)
+        throw CaseError("region[" + std::to_string(r) + "] (\"" + config.regions[r].name +
+                        "\") is gas: the gas-liquid coupling of the solver is not built yet, so cases with gas "
+                        "regions cannot be simulated in this version (they can be parsed and laid out)");
     if (options.until && !(*options.until > 0.0))
       throw CaseError("--until must be a positive time in seconds");
   } catch (const std::exception& e) {

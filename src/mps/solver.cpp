@@ -30,14 +30,18 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
       state_(state),
       constants_(referenceConstants(D, config.numerics.particle_spacing, config.numerics.radius_number_density,
                                     config.numerics.radius_laplacian)),
-      phases_{config.physics.liquid, config.physics.liquid},
+      phases_{config.physics.liquid, config.physics.gas},
       gravity_(firstComponents<D>(config.physics.gravity)),
       domain_lower_(firstComponents<D>(config.domain.min)),
       domain_upper_(firstComponents<D>(config.domain.max)),
       search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian)),
       linear_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
                                       config.numerics.solver_max_iterations)) {
-  for (auto k : state_.particles.kind) initial_fluid_ += (k == ParticleKind::Fluid || k == ParticleKind::Escaped);
+  for (std::size_t i = 0; i < state_.particles.size(); ++i) {
+    const auto k = state_.particles.kind[i];
+    initial_fluid_ += (k == ParticleKind::Fluid || k == ParticleKind::Escaped);
+    if (k == ParticleKind::Fluid) phase_present_[static_cast<int>(state_.particles.phase[i])] = true;
+  }
 }
 
 template <int D>
@@ -97,7 +101,10 @@ void MpsSolver<D>::buildNeighbours() {
 
 template <int D>
 double MpsSolver<D>::chooseTimeStepFor(double until) const {
-  const double nu = std::max(phases_[0].kinematic_viscosity, phases_[1].kinematic_viscosity);
+  // Viscous limit of the phases present (a case without gas is not slowed by the gas viscosity).
+  double nu = 0.0;
+  for (int ph = 0; ph < 2; ++ph)
+    if (phase_present_[ph]) nu = std::max(nu, phases_[ph].kinematic_viscosity);
   double dt = chooseTimeStep(maxFluidSpeed(), constants_.l0, config_.numerics.courant, nu, config_.numerics.dt_max);
   const double remaining = until - state_.time;
   if (remaining < dt) {

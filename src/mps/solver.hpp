@@ -75,6 +75,7 @@ class MpsSolver {
   Vec<D> gravity_;
   Vec<D> domain_lower_, domain_upper_;
   std::size_t initial_fluid_ = 0;
+  std::array<bool, 2> phase_present_{false, false};
   NeighborSearch<D> search_;
   NeighborList neighbours_;
   PressureSystem system_;

@@ -1,0 +1,154 @@
+// Gas regions (connected components of gas particles closer than the link radius), which of them are enclosed
+// in liquid (bubbles, flag delta_gl), and per-bubble statistics. Definitions in enclosed_gas.hpp.
+#include "mps/enclosed_gas.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mistfall {
+
+namespace {
+
+// Union-find whose root is always the smallest index of its component (the region-id order needs it).
+struct MinRootUnionFind {
+  std::vector<std::int32_t> parent;
+
+  explicit MinRootUnionFind(std::size_t n) : parent(n) {
+    for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<std::int32_t>(i);
+  }
+
+  std::int32_t find(std::int32_t i) {
+    while (parent[i] != i) {
+      parent[i] = parent[parent[i]];  // path halving: roots never change
+      i = parent[i];
+    }
+    return i;
+  }
+
+  void join(std::int32_t a, std::int32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a < b) parent[b] = a;
+    else if (b < a) parent[a] = b;
+  }
+};
+
+}  // namespace
+
+int latticeNeighbourCount(int dimension, double link_radius, double l0) {
+  if (dimension != 2 && dimension != 3) throw std::invalid_argument("lattice dimension must be 2 or 3");
+  if (!(l0 > 0.0) || !(link_radius > 0.0)) throw std::invalid_argument("l0 and link radius must be positive");
+  const double ratio2 = (link_radius / l0) * (link_radius / l0);
+  const int reach = static_cast<int>(std::ceil(link_radius / l0)) + 1;
+  const int zreach = dimension == 3 ? reach : 0;
+  int count = 0;
+  for (int i = -reach; i <= reach; ++i)
+    for (int j = -reach; j <= reach; ++j)
+      for (int k = -zreach; k <= zreach; ++k) {
+        const int k2 = i * i + j * j + k * k;
+        if (k2 > 0 && k2 < ratio2) ++count;
+      }
+  return count;
+}
+
+template <int D>
+void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out) {
+  const std::size_t n = p.size();
+  if (nl.particleCount() != n)
+    throw std::invalid_argument("gas regions: neighbour list holds " + std::to_string(nl.particleCount()) +
+                                " particles, expected " + std::to_string(n));
+  const double min_neighbours = kEnclosedMinNeighbourFraction * latticeNeighbourCount(D, link_radius, l0);
+  const double link2 = link_radius * link_radius;
+  const auto gas = [&](std::int64_t j) { return isGas(p.kind[j], p.phase[j]); };
+
+  // Per gas particle: does it border something other than liquid (wall, dummy, open space)?
+  std::vector<char> open(n, 0);
+  const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < count; ++i) {
+    if (!gas(i)) continue;
+    int neighbours = 0;
+    bool foreign = false;
+    for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+      const auto j = nl.indices[s];
+      if (!isActive(p.kind[j]) || (p.position[j] - p.position[i]).squaredNorm() >= link2) continue;
+      ++neighbours;
+      if (!gas(j) && !(p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid)) foreign = true;
+    }
+    open[i] = foreign || neighbours < min_neighbours;
+  }
+
+  // Components, serially in index order (deterministic whatever the thread count).
+  MinRootUnionFind uf(n);
+  for (std::int64_t i = 0; i < count; ++i) {
+    if (!gas(i)) continue;
+    for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+      const auto j = nl.indices[s];
+      if (gas(j) && (p.position[j] - p.position[i]).squaredNorm() < link2) uf.join(static_cast<std::int32_t>(i), j);
+    }
+  }
+
+  // Region ids in the order of each component's root (its smallest index, met before its other particles).
+  out.region_of.assign(n, -1);
+  out.enclosed.clear();
+  for (std::int64_t i = 0; i < count; ++i) {
+    if (!gas(i)) continue;
+    const std::int32_t root = uf.find(static_cast<std::int32_t>(i));
+    if (root == i) {
+      out.region_of[i] = static_cast<std::int32_t>(out.enclosed.size());
+      out.enclosed.push_back(1);
+    } else {
+      out.region_of[i] = out.region_of[root];
+    }
+    if (open[i]) out.enclosed[out.region_of[i]] = 0;
+  }
+
+  out.enclosed_particle.assign(n, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < count; ++i)
+    out.enclosed_particle[i] = out.region_of[i] >= 0 && out.enclosed[out.region_of[i]];
+}
+
+template <int D>
+std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegions& r, double l0) {
+  const std::size_t n = p.size();
+  if (r.region_of.size() != n) throw std::invalid_argument("bubble statistics: gas regions of another particle set");
+  const std::size_t regions = r.enclosed.size();
+  std::vector<std::size_t> particles(regions, 0);
+  std::vector<double> pressure_sum(regions, 0.0);
+  // Positions are summed relative to each region's first particle: the centroid keeps full precision far
+  // from the origin.
+  std::vector<Vec<D>> reference(regions, Vec<D>::Zero()), offset_sum(regions, Vec<D>::Zero());
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto id = r.region_of[i];
+    if (id < 0 || !r.enclosed[id]) continue;
+    if (particles[id] == 0) reference[id] = p.position[i];
+    ++particles[id];
+    pressure_sum[id] += p.pressure[i];
+    offset_sum[id] += p.position[i] - reference[id];
+  }
+
+  std::vector<BubbleStats> stats;
+  const double cell = std::pow(l0, D);
+  for (std::size_t id = 0; id < regions; ++id) {
+    if (!r.enclosed[id] || particles[id] == 0) continue;
+    BubbleStats b;
+    b.region = static_cast<std::int32_t>(id);
+    b.particles = particles[id];
+    const double count = static_cast<double>(particles[id]);
+    b.mean_pressure = pressure_sum[id] / count;
+    const Vec<D> centroid = reference[id] + offset_sum[id] / count;
+    for (int k = 0; k < D; ++k) b.centroid[k] = centroid[k];
+    b.size = count * cell;
+    stats.push_back(b);
+  }
+  return stats;
+}
+
+template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&);
+template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&);
+template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
+template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);
+
+}  // namespace mistfall

@@ -1,0 +1,65 @@
+// Gas regions and enclosed bubbles of the gas-liquid model (MODEL.md, coupling (5)-(8)): the liquid ignores gas
+// particles except those isolated inside the liquid (flag delta_gl), and the diagnostics report per bubble its
+// mean pressure, centroid and area (2D) / volume (3D).
+//
+// Definitions (R = link_radius, the number-density radius re = 2.1 l0 in the solver):
+//  * Gas particle: kind Fluid and phase Gas. Escaped particles (and every other kind) are never gas.
+//  * Two gas particles are linked when |r_j - r_i| < R. A gas region is a connected component of that graph.
+//    Region ids are 0, 1, ... in the order of the smallest particle index of each component (deterministic).
+//  * A region is enclosed (a bubble) when both hold for every one of its particles i:
+//      - every active non-gas particle j with |r_j - r_i| < R is a liquid fluid particle (no wall, no dummy);
+//      - i has at least kEnclosedMinNeighbourFraction * full_count active neighbours (any kind) within R, where
+//        full_count = #{ lattice points k in Z^D : 0 < |k| l0 < R } is the count of an interior lattice
+//        particle (12 in 2D and 32 in 3D for R = 2.1 l0). A deficit means open space next to the gas, e.g.
+//        the open top of the domain.
+//    A lone gas particle surrounded by liquid is a bubble of one particle.
+//  * delta_gl (enclosed_particle) is 1 for the gas particles of enclosed regions, 0 otherwise.
+//  * Bubble statistics (enclosed regions only, by region id): particle count N, mean pressure, centroid
+//    (padded with 0 to three components) and size N l0^D (area in 2D, volume in 3D).
+//
+// The neighbour list must have been built with a radius >= R (pairs farther than R are filtered out here).
+// Per-particle work is OpenMP-parallel; the components are joined serially, so the result does not depend on
+// the thread count.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mps/neighbor_search.hpp"
+#include "mps/particles.hpp"
+
+namespace mistfall {
+
+// A gas particle with fewer active neighbours than this fraction of the full lattice count borders open space.
+inline constexpr double kEnclosedMinNeighbourFraction = 0.8;
+
+struct GasRegions {
+  std::vector<std::int32_t> region_of;  // per particle: gas-region id, or -1 for non-gas / inactive particles
+  std::vector<char> enclosed;           // per region: 1 if the region is isolated inside liquid (a bubble)
+  std::vector<char> enclosed_particle;  // per particle: delta_gl (1 for the gas particles of an enclosed region)
+
+  std::size_t regionCount() const { return enclosed.size(); }
+};
+
+struct BubbleStats {
+  std::int32_t region = -1;              // id in GasRegions
+  std::size_t particles = 0;             // N
+  double mean_pressure = 0.0;            // [Pa]
+  std::array<double, 3> centroid{0.0, 0.0, 0.0};  // [m], components beyond D are 0
+  double size = 0.0;                     // N l0^D: area [m^2] in 2D, volume [m^3] in 3D
+};
+
+inline bool isGas(ParticleKind k, Phase ph) { return k == ParticleKind::Fluid && ph == Phase::Gas; }
+
+// Number of lattice points k in Z^dimension with 0 < |k| l0 < link_radius (neighbours of an interior particle).
+int latticeNeighbourCount(int dimension, double link_radius, double l0);
+
+template <int D>
+void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out);
+
+template <int D>
+std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegions& r, double l0);
+
+}  // namespace mistfall

@@ -1,0 +1,226 @@
+// Tests of the case-file reader for the gas phase ([physics.gas], material = "gas", overlap resolution) and
+// circle-shaped regions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "support/case_text.hpp"
+
+using namespace mistfall;
+using test_support::errorOf;
+using test_support::Parts;
+
+TEST(CaseFileGas, PhaseDefaultsAndLookup) {
+  const CaseConfig c = parseCase(Parts{}.text(), "t.toml");
+  EXPECT_DOUBLE_EQ(c.physics.gas.density, 1.2);
+  EXPECT_DOUBLE_EQ(c.physics.gas.kinematic_viscosity, 1.5e-5);
+  EXPECT_DOUBLE_EQ(c.physics.gas.sound_speed, 340.0);
+  EXPECT_DOUBLE_EQ(PhysicsConfig{}.gas.sound_speed, 340.0);
+  EXPECT_TRUE(std::isinf(PhysicsConfig{}.liquid.sound_speed));  // the liquid defaults are unchanged
+  EXPECT_EQ(&phaseProperties(c.physics, static_cast<int>(Phase::Liquid)), &c.physics.liquid);
+  EXPECT_EQ(&phaseProperties(c.physics, static_cast<int>(Phase::Gas)), &c.physics.gas);
+  EXPECT_THROW(phaseProperties(c.physics, 2), std::out_of_range);
+}
+
+TEST(CaseFileGas, ReadsGasTable) {
+  Parts p;
+  p.physics = "[physics.liquid]\ndensity = 998\n[physics.gas]\ndensity = 1.25\nkinematic_viscosity = 1.6e-5\n"
+              "sound_speed = \"inf\"\n";
+  CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_DOUBLE_EQ(c.physics.liquid.density, 998.0);
+  EXPECT_DOUBLE_EQ(c.physics.gas.density, 1.25);
+  EXPECT_DOUBLE_EQ(c.physics.gas.kinematic_viscosity, 1.6e-5);
+  EXPECT_TRUE(std::isinf(c.physics.gas.sound_speed));
+
+  p.physics = "[physics.gas]\nsound_speed = 100\n";
+  c = parseCase(p.text(), "t.toml");
+  EXPECT_DOUBLE_EQ(c.physics.gas.sound_speed, 100.0);
+  EXPECT_DOUBLE_EQ(c.physics.gas.density, 1.2);  // untouched keys keep the gas defaults
+}
+
+TEST(CaseFileGas, GasTableErrors) {
+  struct Bad {
+    std::string line, path, allowed;
+  };
+  const Bad cases[] = {
+      {"density = 0", "physics.gas.density = 0", "(0, 100000]"},
+      {"density = 2e5", "physics.gas.density = 200000", "(0, 100000]"},
+      {"kinematic_viscosity = -1e-5", "physics.gas.kinematic_viscosity = -1e-5", "[0, 1]"},
+      {"kinematic_viscosity = 2", "physics.gas.kinematic_viscosity = 2", "[0, 1]"},
+      {"sound_speed = 0", "physics.gas.sound_speed = 0", "a number > 0 or the string \"inf\""},
+      {"sound_speed = \"fast\"", "physics.gas.sound_speed = \"fast\"", "a number > 0 or the string \"inf\""},
+  };
+  for (const Bad& b : cases) {
+    Parts p;
+    p.physics = "[physics.gas]\n" + b.line + "\n";
+    const std::string msg = errorOf(p.text());
+    EXPECT_HAS(msg, "cases/x.toml: " + b.path);
+    EXPECT_HAS(msg, "allowed " + b.allowed);
+  }
+  Parts p;
+  p.physics = "[physics.gas]\ndensty = 1.2\n";
+  std::string msg = errorOf(p.text());
+  EXPECT_HAS(msg, "unknown key physics.gas.densty; did you mean 'density'?");
+  p.physics = "[physics]\ngas = 1.2\n";
+  EXPECT_HAS(errorOf(p.text()), "physics.gas = 1.2 has the wrong type");
+  p.physics = "[physics.air]\ndensity = 1.2\n";
+  msg = errorOf(p.text());
+  EXPECT_HAS(msg, "unknown key physics.air");
+  EXPECT_HAS(msg, "gravity, liquid, gas");
+}
+
+namespace {
+std::string gasRegion(const std::string& name, const std::string& min, const std::string& max,
+                      const std::string& extra = "") {
+  return "[[region]]\nname = \"" + name + "\"\nmaterial = \"gas\"\nmin = " + min + "\nmax = " + max + "\n" + extra;
+}
+}  // namespace
+
+TEST(CaseFileGas, GasRegionsMayOverlapAnything) {
+  // Gas declared first over the whole domain, then water and a wall inside it; gas regions overlapping each
+  // other; a velocity on gas.
+  Parts p;
+  p.regions = gasRegion("air", "[0, 0]", "[1, 1]", "velocity = [0.5, 0]\n") + p.regions +
+              "[[region]]\nname = \"floor\"\nmaterial = \"wall\"\nmin = [0.5, 0]\nmax = [1, 0.2]\n" +
+              gasRegion("jet", "[0.6, 0.6]", "[0.9, 0.9]");
+  const CaseConfig c = parseCase(p.text(), "t.toml");
+  ASSERT_EQ(c.regions.size(), 4u);
+  EXPECT_EQ(c.regions[0].material, Material::Gas);
+  EXPECT_EQ(c.regions[0].initial_velocity, (std::array<double, 3>{0.5, 0.0, 0.0}));
+  EXPECT_EQ(c.regions[3].material, Material::Gas);
+  EXPECT_EQ(regionParticleCounts(c), (std::vector<std::size_t>{100u - 25u - 10u - 9u, 25u, 10u, 9u}));
+
+  // Water after gas overrides the gas; gas after water overrides the water.
+  p = Parts{};
+  p.regions += gasRegion("bubble", "[0.2, 0.2]", "[0.4, 0.4]");
+  EXPECT_EQ(regionParticleCounts(parseCase(p.text(), "t.toml")), (std::vector<std::size_t>{21u, 4u}));
+}
+
+TEST(CaseFileGas, RegionLeftWithoutPointsNamesIt) {
+  Parts p;  // the gas lies entirely inside the later water region
+  p.regions = gasRegion("air", "[0.1, 0.1]", "[0.3, 0.3]") + p.regions;
+  std::string msg = errorOf(p.text());
+  EXPECT_HAS(msg, "cases/x.toml: region[0] (\"air\") contains no lattice point not taken by a wall region or by a "
+                  "later water or gas region (material = \"gas\")");
+
+  p = Parts{};  // gas inside a wall, declared after it: walls always win
+  p.regions += "[[region]]\nname = \"block\"\nmaterial = \"wall\"\nmin = [0.5, 0]\nmax = [1, 1]\n" +
+               gasRegion("air", "[0.6, 0.6]", "[0.9, 0.9]");
+  EXPECT_HAS(errorOf(p.text()), "region[2] (\"air\") contains no lattice point not taken by a wall region");
+
+  p = Parts{};  // a later gas region swallows the whole water region
+  p.regions += gasRegion("air", "[0, 0]", "[1, 1]");
+  msg = errorOf(p.text());
+  EXPECT_HAS(msg, "region[0] (\"w\") contains no lattice point");
+  EXPECT_HAS(msg, "(material = \"water\")");
+
+  p = Parts{};  // a gas region that is empty of lattice points to begin with gets the empty-region error
+  p.regions += gasRegion("thin", "[0.6, 0.36]", "[1.0, 0.44]");
+  EXPECT_HAS(errorOf(p.text()), "region[1] (\"thin\") is empty");
+}
+
+TEST(CaseFileGas, WaterStillMustNotOverlapWaterOrWall) {
+  Parts p;
+  p.regions = gasRegion("air", "[0, 0]", "[1, 1]") + p.regions +
+              "[[region]]\nname = \"w2\"\nmin = [0.4, 0.4]\nmax = [0.8, 0.8]\n";
+  std::string msg = errorOf(p.text());
+  EXPECT_HAS(msg, "region[2] (\"w2\") overlaps region[1] (\"w\") (water and water)");
+  EXPECT_HAS(msg, "gas regions may overlap any region");
+  p = Parts{};
+  p.regions += "[[region]]\nname = \"walls\"\nmaterial = \"wall\"\nmin = [0.4, 0.4]\nmax = [0.8, 0.8]\n";
+  EXPECT_HAS(errorOf(p.text()), "region[1] (\"walls\") overlaps region[0] (\"w\") (wall and water)");
+}
+
+TEST(CaseFileGas, VelocityNotAllowedOnWall) {
+  Parts p;
+  p.regions += "[[region]]\nname = \"s\"\nmaterial = \"wall\"\nmin = [0.5, 0.5]\nmax = [1.0, 1.0]\n"
+               "velocity = [1.0, 0.0]\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed only in water and gas regions");
+  p.regions = Parts{}.regions + "[[region]]\nname = \"g\"\nmaterial = \"plasma\"\nmin = [0.5, 0.5]\nmax = [1, 1]\n";
+  EXPECT_HAS(errorOf(p.text()),
+             "region[1].material = \"plasma\" is not allowed; allowed \"water\" or \"wall\" or \"gas\"");
+}
+
+namespace {
+std::string circle(const std::string& name, const std::string& material, const std::string& center,
+                   const std::string& radius, const std::string& extra = "") {
+  return "[[region]]\nname = \"" + name + "\"\nmaterial = \"" + material + "\"\nshape = \"circle\"\ncenter = " +
+         center + "\nradius = " + radius + "\n" + extra;
+}
+}  // namespace
+
+TEST(CaseFileCircle, ReadsCircleAndSphere) {
+  Parts p;
+  p.regions = "[[region]]\nname = \"w\"\nshape = \"box\"\nmin = [0, 0]\nmax = [1, 0.5]\n" +
+              circle("bubble", "gas", "[0.5, 0.25]", "0.2", "velocity = [0, 1]\n");
+  const CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_EQ(c.regions[0].shape, RegionShape::Box);
+  const Region& b = c.regions[1];
+  EXPECT_EQ(b.shape, RegionShape::Circle);
+  EXPECT_EQ(b.center, (std::array<double, 3>{0.5, 0.25, 0.0}));
+  EXPECT_DOUBLE_EQ(b.radius, 0.2);
+  EXPECT_DOUBLE_EQ(b.box.min[0], 0.3);  // bounding box
+  EXPECT_DOUBLE_EQ(b.box.max[1], 0.45);
+  EXPECT_EQ(b.initial_velocity, (std::array<double, 3>{0.0, 1.0, 0.0}));
+
+  Parts q;
+  q.header = "name = \"t3\"\ndimension = 3\n";
+  q.domain = "min = [0, 0, 0]\nmax = [1, 1, 1]\n";
+  q.regions = circle("drop", "water", "[0.5, 0.5, 0.5]", "0.5");
+  const CaseConfig c3 = parseCase(q.text(), "t.toml");
+  // A sphere of radius 5 l0 centred on a cell corner holds 552 lattice points (4/3 pi 5^3 = 523.6).
+  EXPECT_EQ(countLatticePoints(c3, c3.regions[0]), 552u);
+}
+
+TEST(CaseFileCircle, Errors) {
+  const std::string water = Parts{}.regions;
+  struct Bad {
+    std::string regions, expected;
+  };
+  const Bad cases[] = {
+      {water + circle("c", "gas", "[0.5, 0.5]", "0"), "region[1].radius = 0 is out of range; allowed (0, inf)"},
+      {water + circle("c", "gas", "[0.5, 0.5]", "-0.1"), "region[1].radius = -0.1 is out of range"},
+      {water + circle("c", "gas", "[0.5, 0.5]", "\"big\""), "region[1].radius = \"big\" has the wrong type"},
+      {water + circle("c", "gas", "[0.5, 0.5]", "0.75"),
+       "region[1].radius = 0.75 takes the circle outside the domain on axis 0: center[0] -/+ radius = [-0.25, 1.25]"},
+      {water + circle("c", "gas", "[0.5, 0.8]", "0.3"),
+       "region[1].radius = 0.3 takes the circle outside the domain on axis 1"},
+      {water + circle("c", "gas", "[1.5, 0.5]", "0.1"),
+       "region[1].center[0] = 1.5 lies outside the domain; allowed [0, 1] (domain.min[0] to domain.max[0])"},
+      {water + circle("c", "gas", "[0.5, 0.5]", "0.1", "min = [0.4, 0.4]\n"),
+       "region[1].min = [0.4, 0.4] is not allowed with shape = \"circle\"; allowed center and radius"},
+      {water + circle("c", "gas", "[0.5, 0.5]", "0.1", "max = [0.6, 0.6]\n"),
+       "region[1].max = [0.6, 0.6] is not allowed with shape = \"circle\""},
+      {water + "[[region]]\nname = \"c\"\nmaterial = \"gas\"\nmin = [0.5, 0.5]\nmax = [1, 1]\nradius = 0.1\n",
+       "region[1].radius = 0.1 is not allowed with shape = \"box\"; allowed min and max"},
+      {water + "[[region]]\nname = \"c\"\nshape = \"box\"\ncenter = [0.5, 0.5]\nmin = [0.5, 0.5]\nmax = [1, 1]\n",
+       "region[1].center = [0.5, 0.5] is not allowed with shape = \"box\""},
+      {water + "[[region]]\nname = \"c\"\nshape = \"circle\"\nradius = 0.1\n", "missing required key region[1].center"},
+      {water + "[[region]]\nname = \"c\"\nshape = \"circle\"\ncenter = [0.5, 0.5]\n",
+       "missing required key region[1].radius; allowed a number in (0, inf)"},
+      {water + "[[region]]\nname = \"c\"\nshape = \"circle\"\ncenter = [0.5, 0.5, 0.5]\nradius = 0.1\n",
+       "region[1].center = [0.5, 0.5, 0.5] has 3 elements"},
+      {water + "[[region]]\nname = \"c\"\nshape = \"square\"\nmin = [0.5, 0.5]\nmax = [1, 1]\n",
+       "region[1].shape = \"square\" is not allowed; allowed \"box\" or \"circle\""},
+      // Between lattice points (0.65 and 0.75 on both axes): the circle holds none.
+      {water + circle("c", "gas", "[0.7, 0.7]", "0.02"),
+       "region[1] (\"c\") is empty: region[1].center = [0.7, 0.7], region[1].radius = 0.02 contains no lattice point"},
+      {water + circle("c", "wall", "[0.6, 0.6]", "0.2"), "region[1] (\"c\") overlaps region[0] (\"w\")"},
+      {water + circle("c", "water", "[0.75, 0.75]", "0.2") + circle("d", "water", "[0.75, 0.35]", "0.25"),
+       "region[2] (\"d\") overlaps region[1] (\"c\")"},
+  };
+  for (const Bad& b : cases) {
+    Parts p;
+    p.regions = b.regions;
+    EXPECT_HAS(errorOf(p.text()), b.expected);
+  }
+  // Touching is no overlap: a water circle touching the water box and a wall circle.
+  Parts p;
+  p.regions = water + circle("c", "wall", "[0.75, 0.75]", "0.25") + circle("d", "water", "[0.75, 0.25]", "0.25");
+  EXPECT_NO_THROW(parseCase(p.text(), "t.toml"));
+}

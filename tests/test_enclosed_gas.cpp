@@ -1,0 +1,375 @@
+// Gas regions and enclosed bubbles (delta_gl) on hand-built lattices in 2D and 3D: a bubble in liquid, an open
+// gas layer, gas at a wall, two bubbles' ids, a one-particle bubble, escaped particles, a brute-force
+// reference on random gas, and thread-count independence.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+
+#include "mps/enclosed_gas.hpp"
+
+using namespace mistfall;
+
+namespace {
+
+constexpr double kL0 = 0.01;
+constexpr double kLink = 2.1 * kL0;    // the number-density radius, as the solver passes it
+constexpr double kSearch = 3.1 * kL0;  // the solver's list radius (max of both radii): larger than the link
+
+template <int D>
+using Index = Eigen::Matrix<int, D, 1>;
+
+struct Site {
+  bool present = true;
+  ParticleKind kind = ParticleKind::Fluid;
+  Phase phase = Phase::Liquid;
+};
+const Site kLiquid{};
+const Site kGas{true, ParticleKind::Fluid, Phase::Gas};
+
+template <int D>
+Vec<D> origin() { return Vec<D>::Constant(0.37); }  // off the origin: nothing may depend on it
+
+template <int D>
+Vec<D> at(const Index<D>& k) { return origin<D>() + kL0 * k.template cast<double>(); }
+
+// Lattice points lo <= k <= hi (axis 0 fastest, so lower rows get smaller indices), each as classify(k) says;
+// pressures are distinct per particle.
+template <int D, class Classify>
+Particles<D> makeLattice(const Index<D>& lo, const Index<D>& hi, Classify&& classify) {
+  Particles<D> p;
+  Index<D> k = lo;
+  while (true) {
+    const Site s = classify(k);
+    if (s.present) {
+      p.add(at<D>(k), Vec<D>::Zero(), s.kind, s.phase);
+      p.pressure.back() = 1000.0 + 37.0 * std::sin(0.1 * p.size());
+    }
+    int a = 0;
+    for (; a < D; ++a) {
+      if (++k[a] <= hi[a]) break;
+      k[a] = lo[a];
+    }
+    if (a == D) break;
+  }
+  return p;
+}
+
+template <int D>
+NeighborList neighbours(const Particles<D>& p) {
+  Vec<D> lo = origin<D>(), hi = origin<D>();
+  for (const auto& x : p.position) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  NeighborSearch<D> search(lo, hi, kSearch);
+  NeighborList nl;
+  search.build(p.position, p.kind, nl);
+  return nl;
+}
+
+template <int D>
+GasRegions regionsOf(const Particles<D>& p) {
+  GasRegions r;
+  findGasRegions<D>(p, neighbours<D>(p), kLink, kL0, r);
+  return r;
+}
+
+template <int D>
+bool inBall(const Index<D>& k, const Index<D>& centre, double radius) {
+  return (k - centre).template cast<double>().squaredNorm() <= radius * radius;
+}
+
+// Every gas particle is in some region, every other particle in none; delta_gl follows the region's flag.
+template <int D>
+void expectConsistent(const Particles<D>& p, const GasRegions& r) {
+  ASSERT_EQ(r.region_of.size(), p.size());
+  ASSERT_EQ(r.enclosed_particle.size(), p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ASSERT_EQ(r.region_of[i] >= 0, isGas(p.kind[i], p.phase[i])) << i;
+    ASSERT_LT(r.region_of[i], static_cast<std::int32_t>(r.regionCount()));
+    ASSERT_EQ(r.enclosed_particle[i], r.region_of[i] >= 0 && r.enclosed[r.region_of[i]]) << i;
+  }
+}
+
+template <int D>
+void checkBubbleStats(const BubbleStats& b, const Particles<D>& p, const GasRegions& r, const Vec<D>& centre) {
+  std::size_t count = 0;
+  double pressure = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (r.region_of[i] == b.region) ++count, pressure += p.pressure[i];
+  EXPECT_EQ(b.particles, count);
+  EXPECT_NEAR(b.mean_pressure, pressure / count, 1e-12 * std::abs(pressure / count));
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(b.centroid[k], k < D ? centre[k] : 0.0, 1e-12) << "axis " << k;
+  EXPECT_NEAR(b.size, count * std::pow(kL0, D), 1e-12 * count * std::pow(kL0, D));
+}
+
+template <int D>
+void checkDiscInsideLiquid() {
+  const Index<D> zero = Index<D>::Zero();
+  const auto p = makeLattice<D>(Index<D>::Constant(-8), Index<D>::Constant(8),
+                                [&](const Index<D>& k) { return inBall<D>(k, zero, 2.5) ? kGas : kLiquid; });
+  const auto r = regionsOf<D>(p);
+  expectConsistent<D>(p, r);
+  ASSERT_EQ(r.regionCount(), 1u);
+  EXPECT_TRUE(r.enclosed[0]);
+  const auto stats = bubbleStatistics<D>(p, r, kL0);
+  ASSERT_EQ(stats.size(), 1u);
+  EXPECT_EQ(stats[0].region, 0);
+  EXPECT_EQ(stats[0].particles, D == 2 ? 21u : 81u);  // lattice points with |k| <= 2.5
+  checkBubbleStats<D>(stats[0], p, r, origin<D>());
+}
+
+// The same block topped by three gas rows with nothing above: the layer is a region of its own and open.
+template <int D>
+void checkOpenLayerAbove() {
+  const Index<D> zero = Index<D>::Zero();
+  Index<D> hi = Index<D>::Constant(8);
+  hi[D - 1] = 11;
+  const auto p = makeLattice<D>(Index<D>::Constant(-8), hi, [&](const Index<D>& k) {
+    return k[D - 1] >= 9 || inBall<D>(k, zero, 2.5) ? kGas : kLiquid;
+  });
+  const auto r = regionsOf<D>(p);
+  expectConsistent<D>(p, r);
+  ASSERT_EQ(r.regionCount(), 2u);
+  EXPECT_TRUE(r.enclosed[0]);   // the disc: its smallest index comes first
+  EXPECT_FALSE(r.enclosed[1]);  // the layer
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isGas(p.kind[i], p.phase[i])) continue;
+    EXPECT_EQ(r.region_of[i], p.position[i][D - 1] > origin<D>()[D - 1] + 8.5 * kL0 ? 1 : 0);
+  }
+  const auto stats = bubbleStatistics<D>(p, r, kL0);
+  ASSERT_EQ(stats.size(), 1u);
+  EXPECT_EQ(stats[0].region, 0);
+  checkBubbleStats<D>(stats[0], p, r, origin<D>());
+}
+
+// Floor: two dummy rows, one wall row (vertical index -3, -2, -1), liquid above. Three gas features spaced along
+// axis 0: a pocket touching the wall, a particle two rows above the wall (the wall within the link radius) and a
+// particle three rows above it (nothing but liquid within the link radius: a bubble).
+template <int D>
+void checkGasAtWall() {
+  Index<D> lo = Index<D>::Constant(-5), hi = Index<D>::Constant(5);
+  lo[0] = -14, hi[0] = 14, lo[D - 1] = -3, hi[D - 1] = 8;
+  Index<D> pocket = Index<D>::Zero(), near = Index<D>::Zero(), far = Index<D>::Zero();
+  pocket[0] = -8, pocket[D - 1] = 1;
+  near[D - 1] = 1;
+  far[0] = 8, far[D - 1] = 2;
+  const auto p = makeLattice<D>(lo, hi, [&](const Index<D>& k) {
+    if (k[D - 1] < -1) return Site{true, ParticleKind::Dummy, Phase::Liquid};
+    if (k[D - 1] == -1) return Site{true, ParticleKind::Wall, Phase::Liquid};
+    return inBall<D>(k, pocket, 1.5) || k == near || k == far ? kGas : kLiquid;
+  });
+  const auto r = regionsOf<D>(p);
+  expectConsistent<D>(p, r);
+  ASSERT_EQ(r.regionCount(), 3u);
+  EXPECT_FALSE(r.enclosed[0]);  // pocket: its lowest row (vertical index 0) comes first
+  EXPECT_FALSE(r.enclosed[1]);  // two rows above the wall
+  EXPECT_TRUE(r.enclosed[2]);   // three rows above the wall
+  const auto stats = bubbleStatistics<D>(p, r, kL0);
+  ASSERT_EQ(stats.size(), 1u);
+  EXPECT_EQ(stats[0].region, 2);
+  EXPECT_EQ(stats[0].particles, 1u);
+  checkBubbleStats<D>(stats[0], p, r, at<D>(far));
+}
+
+template <int D>
+void checkSingleGasParticle() {
+  const auto p = makeLattice<D>(Index<D>::Constant(-4), Index<D>::Constant(4),
+                                [](const Index<D>& k) { return k.isZero() ? kGas : kLiquid; });
+  const auto r = regionsOf<D>(p);
+  expectConsistent<D>(p, r);
+  ASSERT_EQ(r.regionCount(), 1u);
+  EXPECT_TRUE(r.enclosed[0]);
+  const auto stats = bubbleStatistics<D>(p, r, kL0);
+  ASSERT_EQ(stats.size(), 1u);
+  EXPECT_EQ(stats[0].particles, 1u);
+  checkBubbleStats<D>(stats[0], p, r, origin<D>());
+}
+
+// Connected components and the enclosed rule straight from the definitions, O(N^2).
+template <int D>
+GasRegions bruteForce(const Particles<D>& p) {
+  const std::size_t n = p.size();
+  const int full = latticeNeighbourCount(D, kLink, kL0);
+  auto close = [&](std::size_t i, std::size_t j) {
+    return i != j && isActive(p.kind[j]) && (p.position[j] - p.position[i]).norm() < kLink;
+  };
+  GasRegions r;
+  r.region_of.assign(n, -1);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!isGas(p.kind[s], p.phase[s]) || r.region_of[s] >= 0) continue;
+    const auto id = static_cast<std::int32_t>(r.enclosed.size());
+    r.enclosed.push_back(1);
+    std::vector<std::size_t> stack{s};
+    r.region_of[s] = id;
+    while (!stack.empty()) {
+      const auto i = stack.back();
+      stack.pop_back();
+      int count = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (!close(i, j)) continue;
+        ++count;
+        if (isGas(p.kind[j], p.phase[j])) {
+          if (r.region_of[j] < 0) r.region_of[j] = id, stack.push_back(j);
+        } else if (p.kind[j] != ParticleKind::Fluid) {
+          r.enclosed[id] = 0;
+        }
+      }
+      if (count < 0.8 * full) r.enclosed[id] = 0;
+    }
+  }
+  return r;
+}
+
+// A tank (dummy floor, wall row) of liquid with random gas particles and an open top; some escaped particles.
+// Sparser gas in 3D (32 neighbours instead of 12) so that isolated bubbles remain.
+template <int D>
+Particles<D> randomGas(int half, unsigned seed) {
+  const unsigned gas_percent = D == 2 ? 20 : 5;
+  std::mt19937 rng(seed);
+  Index<D> lo = Index<D>::Constant(-half), hi = Index<D>::Constant(half);
+  auto p = makeLattice<D>(lo, hi, [&](const Index<D>& k) {
+    const unsigned roll = rng() % 100;
+    if (k[D - 1] < -half + 2) return Site{true, ParticleKind::Dummy, Phase::Liquid};
+    if (k[D - 1] == -half + 2) return Site{true, ParticleKind::Wall, Phase::Liquid};
+    return roll < gas_percent ? kGas : kLiquid;
+  });
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (rng() % 50 == 0) p.kind[i] = ParticleKind::Escaped;
+  return p;
+}
+
+template <int D>
+void checkAgainstBruteForce(int half) {
+  const auto p = randomGas<D>(half, 7);
+  const auto r = regionsOf<D>(p);
+  expectConsistent<D>(p, r);
+  const auto expected = bruteForce<D>(p);
+  EXPECT_EQ(r.region_of, expected.region_of);
+  EXPECT_EQ(r.enclosed, expected.enclosed);
+  std::size_t enclosed = 0;
+  for (char e : r.enclosed) enclosed += e;
+  EXPECT_GT(enclosed, 5u);                        // not vacuous: bubbles ...
+  EXPECT_GT(r.regionCount() - enclosed, 5u);      // ... and open regions
+  EXPECT_EQ(bubbleStatistics<D>(p, r, kL0).size(), enclosed);
+}
+
+template <int D>
+void checkThreadCountIndependence(int half) {
+  const auto p = randomGas<D>(half, 11);
+  const int before = omp_get_max_threads();
+  std::vector<GasRegions> results;
+  for (int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    results.push_back(regionsOf<D>(p));
+  }
+  omp_set_num_threads(before);
+  const auto stats = bubbleStatistics<D>(p, results[0], kL0);
+  ASSERT_GT(results[0].regionCount(), 10u);
+  for (std::size_t t = 1; t < results.size(); ++t) {
+    EXPECT_EQ(results[t].region_of, results[0].region_of);
+    EXPECT_EQ(results[t].enclosed, results[0].enclosed);
+    EXPECT_EQ(results[t].enclosed_particle, results[0].enclosed_particle);
+    const auto other = bubbleStatistics<D>(p, results[t], kL0);
+    ASSERT_EQ(other.size(), stats.size());
+    for (std::size_t b = 0; b < stats.size(); ++b) {
+      EXPECT_EQ(other[b].mean_pressure, stats[b].mean_pressure);
+      EXPECT_EQ(other[b].centroid, stats[b].centroid);
+    }
+  }
+}
+
+}  // namespace
+
+TEST(EnclosedGas, LatticeNeighbourCounts) {
+  EXPECT_EQ(latticeNeighbourCount(2, kLink, kL0), 12);
+  EXPECT_EQ(latticeNeighbourCount(3, kLink, kL0), 32);
+  EXPECT_EQ(latticeNeighbourCount(2, 1.5, 1.0), 8);
+  EXPECT_THROW(latticeNeighbourCount(4, kLink, kL0), std::invalid_argument);
+}
+
+TEST(EnclosedGas, DiscInsideLiquidIsOneBubble2D) { checkDiscInsideLiquid<2>(); }
+TEST(EnclosedGas, SphereInsideLiquidIsOneBubble3D) { checkDiscInsideLiquid<3>(); }
+TEST(EnclosedGas, GasLayerWithNothingAboveIsOpen2D) { checkOpenLayerAbove<2>(); }
+TEST(EnclosedGas, GasLayerWithNothingAboveIsOpen3D) { checkOpenLayerAbove<3>(); }
+TEST(EnclosedGas, GasWithinLinkRadiusOfAWallIsOpen2D) { checkGasAtWall<2>(); }
+TEST(EnclosedGas, GasWithinLinkRadiusOfAWallIsOpen3D) { checkGasAtWall<3>(); }
+TEST(EnclosedGas, SingleGasParticleInLiquidIsABubble2D) { checkSingleGasParticle<2>(); }
+TEST(EnclosedGas, SingleGasParticleInLiquidIsABubble3D) { checkSingleGasParticle<3>(); }
+
+TEST(EnclosedGas, TwoBubblesGetIdsBySmallestIndex) {
+  // b sits lower (smaller indices) though further along axis 0: it is region 0.
+  const Index<2> a(-5, 5), b(5, -5);
+  const auto p = makeLattice<2>(Index<2>::Constant(-10), Index<2>::Constant(10), [&](const Index<2>& k) {
+    return inBall<2>(k, a, 1.5) || inBall<2>(k, b, 2.0) ? kGas : kLiquid;
+  });
+  const auto r = regionsOf<2>(p);
+  expectConsistent<2>(p, r);
+  ASSERT_EQ(r.regionCount(), 2u);
+  EXPECT_TRUE(r.enclosed[0] && r.enclosed[1]);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (r.region_of[i] < 0) continue;
+    EXPECT_EQ(r.region_of[i], p.position[i][1] < origin<2>()[1] ? 0 : 1);
+  }
+  const auto stats = bubbleStatistics<2>(p, r, kL0);
+  ASSERT_EQ(stats.size(), 2u);
+  EXPECT_EQ(stats[0].region, 0);
+  EXPECT_EQ(stats[0].particles, 13u);  // |k| <= 2
+  checkBubbleStats<2>(stats[0], p, r, at<2>(b));
+  EXPECT_EQ(stats[1].region, 1);
+  EXPECT_EQ(stats[1].particles, 9u);  // |k| <= 1.5
+  checkBubbleStats<2>(stats[1], p, r, at<2>(a));
+}
+
+TEST(EnclosedGas, EscapedParticlesAreIgnored) {
+  // Two gas particles 4 l0 apart in liquid, bridged by a chain of escaped gas particles. Escaped particles
+  // neither link the two nor open them (they are not liquid), whether or not the list still holds them.
+  auto p = makeLattice<2>(Index<2>::Constant(-8), Index<2>::Constant(8), [](const Index<2>& k) {
+    return k == Index<2>(-2, 0) || k == Index<2>(2, 0) ? kGas : kLiquid;
+  });
+  const std::size_t first_chain = p.size();
+  for (int x = -2; x <= 2; ++x) {
+    p.add(origin<2>() + kL0 * Vec<2>(x, 0.5), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Gas);
+    p.pressure.back() = 1e9;
+  }
+  const NeighborList stale = neighbours<2>(p);  // built while the chain was still active
+  for (std::size_t i = first_chain; i < p.size(); ++i) p.kind[i] = ParticleKind::Escaped;
+  for (const NeighborList* nl : {&stale, static_cast<const NeighborList*>(nullptr)}) {
+    GasRegions r;
+    findGasRegions<2>(p, nl ? *nl : neighbours<2>(p), kLink, kL0, r);
+    expectConsistent<2>(p, r);
+    ASSERT_EQ(r.regionCount(), 2u);
+    EXPECT_TRUE(r.enclosed[0] && r.enclosed[1]);
+    for (std::size_t i = first_chain; i < p.size(); ++i) EXPECT_EQ(r.region_of[i], -1);
+    const auto stats = bubbleStatistics<2>(p, r, kL0);
+    ASSERT_EQ(stats.size(), 2u);
+    EXPECT_EQ(stats[0].particles + stats[1].particles, 2u);
+    EXPECT_LT(stats[0].mean_pressure, 2000.0);
+  }
+}
+
+TEST(EnclosedGas, LiquidOnlyHasNoRegions) {
+  auto p = makeLattice<3>(Index<3>::Constant(-3), Index<3>::Constant(3), [](const Index<3>&) { return kLiquid; });
+  p.kind[5] = ParticleKind::Escaped;
+  p.phase[5] = Phase::Gas;  // an escaped gas particle is not gas
+  const auto r = regionsOf<3>(p);
+  expectConsistent<3>(p, r);
+  EXPECT_EQ(r.regionCount(), 0u);
+  EXPECT_TRUE(bubbleStatistics<3>(p, r, kL0).empty());
+  Particles<2> none;
+  const auto empty = regionsOf<2>(none);
+  EXPECT_EQ(empty.regionCount(), 0u);
+  EXPECT_TRUE(empty.region_of.empty());
+}
+
+TEST(EnclosedGas, MismatchedNeighbourListThrows) {
+  const auto p = makeLattice<2>(Index<2>::Constant(-2), Index<2>::Constant(2), [](const Index<2>&) { return kGas; });
+  GasRegions r;
+  EXPECT_THROW(findGasRegions<2>(p, NeighborList{}, kLink, kL0, r), std::invalid_argument);
+}
+
+TEST(EnclosedGas, RandomGasMatchesBruteForce2D) { checkAgainstBruteForce<2>(30); }
+TEST(EnclosedGas, RandomGasMatchesBruteForce3D) { checkAgainstBruteForce<3>(9); }
+TEST(EnclosedGas, ThreadCountIndependent2D) { checkThreadCountIndependence<2>(40); }
+TEST(EnclosedGas, ThreadCountIndependent3D) { checkThreadCountIndependence<3>(12); }
