@@ -78,12 +78,15 @@ class HypreAmgSolver final : public LinearSolver {
     HYPRE_PCGSetPrintLevel(pcg, 0);
     HYPRE_BoomerAMGCreate(&amg);
     HYPRE_BoomerAMGSetPrintLevel(amg, 0);
-    HYPRE_BoomerAMGSetCoarsenType(amg, 8);   // PMIS
-    HYPRE_BoomerAMGSetInterpType(amg, 6);    // extended+i
+    // Settings chosen by measurement on the 2D dam break at 40k particles (ms per step, 2 threads): PMIS +
+    // extended+i interpolation + one level of aggressive coarsening, theta 0.25: 120 ms (16 CG iterations);
+    // HMIS + classical interpolation, no aggressive coarsening, theta 0.35: 83 ms (6 iterations).
+    HYPRE_BoomerAMGSetCoarsenType(amg, 10);        // HMIS
+    HYPRE_BoomerAMGSetInterpType(amg, 0);          // classical modified interpolation
     HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
-    HYPRE_BoomerAMGSetAggNumLevels(amg, 1);
-    HYPRE_BoomerAMGSetStrongThreshold(amg, 0.25);
-    HYPRE_BoomerAMGSetRelaxType(amg, 6);     // symmetric hybrid Gauss-Seidel
+    HYPRE_BoomerAMGSetAggNumLevels(amg, 0);
+    HYPRE_BoomerAMGSetStrongThreshold(amg, 0.35);
+    HYPRE_BoomerAMGSetRelaxType(amg, 6);           // symmetric hybrid Gauss-Seidel
     HYPRE_BoomerAMGSetNumSweeps(amg, 1);
     HYPRE_BoomerAMGSetTol(amg, 0.0);
     HYPRE_BoomerAMGSetMaxIter(amg, 1);
