@@ -13,6 +13,7 @@
 #include "io/diagnostics.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
+#include "support/same_particles.hpp"
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -46,17 +47,7 @@ Particles<D> sampleParticles(std::size_t n) {
   return p;
 }
 
-template <int D>
-void expectSameParticles(const Particles<D>& a, const Particles<D>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  const std::size_t n = a.size();
-  EXPECT_EQ(0, std::memcmp(a.position.data(), b.position.data(), n * sizeof(Vec<D>)));
-  EXPECT_EQ(0, std::memcmp(a.velocity.data(), b.velocity.data(), n * sizeof(Vec<D>)));
-  EXPECT_EQ(0, std::memcmp(a.pressure.data(), b.pressure.data(), n * sizeof(double)));
-  EXPECT_EQ(0, std::memcmp(a.number_density.data(), b.number_density.data(), n * sizeof(double)));
-  EXPECT_EQ(a.kind, b.kind);
-  EXPECT_EQ(a.phase, b.phase);
-}
+using test_support::expectSameParticles;
 
 template <int D>
 void vtpRoundTrip(bool ascii) {
