@@ -43,23 +43,14 @@ std::string readText(const fs::path& file) {
 }
 
 template <int D>
-DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const MpsSolver<D>& solver, const StepReport& last,
+DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& config, const StepReport& last,
                              double wall_seconds) {
   DiagnosticsRow row;
   row.time = s.time;
   row.step = s.step;
   row.dt = s.dt;
-  const auto& p = s.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    switch (p.kind[i]) {
-      case ParticleKind::Fluid: (p.phase[i] == Phase::Liquid ? row.liquid : row.gas) += 1; break;
-      case ParticleKind::Wall: row.wall += 1; break;
-      case ParticleKind::Dummy: row.dummy += 1; break;
-      case ParticleKind::Escaped: row.escaped += 1; break;
-    }
-  }
-  row.max_speed = solver.maxFluidSpeed();
-  row.kinetic_energy = solver.fluidKineticEnergy();
+  const double volume = std::pow(config.numerics.particle_spacing, D);  // particle mass = rho l0^D
+  measureParticles(row, s.particles, config.physics.liquid.density * volume, config.physics.gas.density * volume);
   row.ppe_iterations = last.ppe_iterations;
   row.ppe_residual = last.ppe_residual;
   row.wall_seconds = wall_seconds;
@@ -98,7 +89,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     writeVtp<D>(dir / name, state.particles, state.time, options.ascii);
     collection.add(state.time, name);
     collection.write();
-    diagnostics.append(diagnosticsOf(state, solver, last, wall_offset + omp_get_wtime() - wall_start));
+    diagnostics.append(diagnosticsOf(state, config, last, wall_offset + omp_get_wtime() - wall_start));
     state.next_frame += 1;
     writeCheckpoint<D>(dir / kCheckpoint, state);
   };

@@ -61,15 +61,6 @@ double MpsSolver<D>::maxFluidSpeed() const {
 }
 
 template <int D>
-double MpsSolver<D>::fluidKineticEnergy() const {
-  const auto& p = state_.particles;
-  double e = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == ParticleKind::Fluid) e += 0.5 * particleMass(i) * p.velocity[i].squaredNorm();
-  return e;
-}
-
-template <int D>
 const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};

@@ -53,7 +53,6 @@ class MpsSolver {
   const MpsConstants& constants() const { return constants_; }
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
-  double fluidKineticEnergy() const;  // sum 1/2 m |u|^2, m = rho l0^D (per unit width in 2D)
   double particleMass(std::size_t i) const;
 
  private:
