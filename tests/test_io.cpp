@@ -154,7 +154,8 @@ TEST(Pvd, AddWriteLoadTruncate) {
 
 TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(
-      "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds",
+      "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
+      "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -163,6 +164,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.dt = 1e-4 / 3.0;
   r.liquid = 10; r.gas = 2; r.wall = 3; r.dummy = 4; r.escaped = 5;
   r.max_speed = 1.25; r.kinetic_energy = 0.5; r.ppe_iterations = 42; r.ppe_residual = 1e-9; r.wall_seconds = 12.5;
+  r.bubbles = 2; r.bubble_particles = 77; r.bubble_pressure = 563.25; r.bubble_y = 0.0925; r.bubble_size = 4.8e-4;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -175,6 +177,11 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(5u, rows[0].escaped);
   EXPECT_EQ(42, rows[0].ppe_iterations);
   EXPECT_DOUBLE_EQ(1e-9, rows[0].ppe_residual);
+  EXPECT_EQ(2u, rows[0].bubbles);
+  EXPECT_EQ(77u, rows[0].bubble_particles);
+  EXPECT_EQ(563.25, rows[0].bubble_pressure);
+  EXPECT_EQ(0.0925, rows[0].bubble_y);
+  EXPECT_EQ(4.8e-4, rows[0].bubble_size);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -31,7 +31,8 @@ struct TankSystem {
     std::array<PhaseProperties, 2> phases{config.physics.liquid, config.physics.liquid};
     phases[0].sound_speed = phases[1].sound_speed = sound_speed;
     PressureSystem sys;
-    assemblePressureSystem<2>(state.particles, solver->neighbours(), solver->constants(), phases, surface,
+    assemblePressureSystem<2>(state.particles, state.particles.number_density, solver->neighbours(),
+                              solver->constants(), singlePhaseProblem(state.particles, phases, surface),
                               PressureSourceTerm{PressureSource::Standard, 1.0}, dt, sys);
     return sys;
   }

@@ -386,17 +386,7 @@ material = "water"
 min = [0.05, 0.1]
 max = [0.15, 0.25]
 )";
-  // Gas parses and lays out, but the solver cannot run it yet: refused up front, not left to diverge.
-  std::string with_gas = damBreakCase(0.1, 0.02);
-  with_gas += R"(
-[[region]]
-name = "air"
-material = "gas"
-min = [0.1, 0.0]
-max = [0.2, 0.1]
-)";
   return {
-      {"gas_not_yet_simulated", with_gas, "region[4] (\"air\") is gas"},
       {"out_of_range", damBreakCase(0.1, 0.02, "courant = 2\n"), "numerics.courant"},
       {"unknown_key", damBreakCase(0.1, 0.02, "courrant = 0.1\n"), "numerics.courrant"},
       {"overlap", overlapping, "overlaps"},

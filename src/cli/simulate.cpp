@@ -12,6 +12,7 @@
 #include "case/scene.hpp"
 #include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bubble_log.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/pvd_collection.hpp"
@@ -28,6 +29,7 @@ constexpr const char* kCaseCopy = "case.toml";
 constexpr const char* kCheckpoint = "checkpoint.bin";
 constexpr const char* kDiagnostics = "diagnostics.csv";
 constexpr const char* kCollection = "frames.pvd";
+constexpr const char* kBubbles = "bubbles.csv";
 
 std::string frameName(int frame) {
   char buf[64];
@@ -44,7 +46,7 @@ std::string readText(const fs::path& file) {
 
 template <int D>
 DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& config, const StepReport& last,
-                             double wall_seconds) {
+                             const std::vector<BubbleStats>& bubbles, double wall_seconds) {
   DiagnosticsRow row;
   row.time = s.time;
   row.step = s.step;
@@ -54,6 +56,19 @@ DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& conf
   row.ppe_iterations = last.ppe_iterations;
   row.ppe_residual = last.ppe_residual;
   row.wall_seconds = wall_seconds;
+  row.gas_ppe_iterations = last.gas_ppe_iterations;
+  row.bubbles = bubbles.size();
+  const BubbleStats* largest = nullptr;
+  for (const auto& b : bubbles)
+    if (!largest || b.particles > largest->particles) largest = &b;
+  if (largest) {
+    row.bubble_particles = largest->particles;
+    row.bubble_pressure = largest->mean_pressure;
+    row.bubble_x = largest->centroid[0];
+    row.bubble_y = largest->centroid[1];
+    row.bubble_z = largest->centroid[2];
+    row.bubble_size = largest->size;
+  }
   return row;
 }
 
@@ -81,6 +96,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     resume_time = state.time;
   }
   DiagnosticsWriter diagnostics(dir / kDiagnostics, resume_time);
+  BubbleLog bubble_log(dir / kBubbles, resume_time);
   const double wall_start = omp_get_wtime();
   StepReport last;
 
@@ -89,7 +105,9 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     writeVtp<D>(dir / name, state.particles, state.time, options.ascii);
     collection.add(state.time, name);
     collection.write();
-    diagnostics.append(diagnosticsOf(state, config, last, wall_offset + omp_get_wtime() - wall_start));
+    const auto bubbles = solver.currentBubbles();
+    diagnostics.append(diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start));
+    bubble_log.append(state.time, bubbles);
     state.next_frame += 1;
     writeCheckpoint<D>(dir / kCheckpoint, state);
   };
@@ -142,11 +160,6 @@ int runSimulate(const SimulateOptions& options) {
         throw CaseError("output directory " + options.out_dir.string() +
                         " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
     }
-    for (std::size_t r = 0; r < config.regions.size(); ++r)
-      if (config.regions[r].material == Material::Gas)
-        throw CaseError("region[" + std::to_string(r) + "] (\"" + config.regions[r].name +
-                        "\") is gas: the gas-liquid coupling of the solver is not built yet, so cases with gas "
-                        "regions cannot be simulated in this version (they can be parsed and laid out)");
     if (options.until && !(*options.until > 0.0))
       throw CaseError("--until must be a positive time in seconds");
   } catch (const std::exception& e) {
@@ -159,7 +172,8 @@ int runSimulate(const SimulateOptions& options) {
     // A run directory that cannot be created (a path through a file, no permission) is bad input too.
     try {
       if (options.overwrite) {
-        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy}) fs::remove(options.out_dir / f);
+        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy, kBubbles})
+          fs::remove(options.out_dir / f);
         fs::remove_all(options.out_dir / "frames");
       }
       fs::create_directories(options.out_dir / "frames");

@@ -67,6 +67,14 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::ppe_iterations>("ppe_iterations"),
     column<&DiagnosticsRow::ppe_residual>("ppe_residual"),
     column<&DiagnosticsRow::wall_seconds>("wall_seconds"),
+    column<&DiagnosticsRow::gas_ppe_iterations>("gas_ppe_iterations"),
+    column<&DiagnosticsRow::bubbles>("bubbles"),
+    column<&DiagnosticsRow::bubble_particles>("bubble_particles"),
+    column<&DiagnosticsRow::bubble_pressure>("bubble_pressure"),
+    column<&DiagnosticsRow::bubble_x>("bubble_x"),
+    column<&DiagnosticsRow::bubble_y>("bubble_y"),
+    column<&DiagnosticsRow::bubble_z>("bubble_z"),
+    column<&DiagnosticsRow::bubble_size>("bubble_size"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

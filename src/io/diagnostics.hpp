@@ -21,6 +21,13 @@ struct DiagnosticsRow {
   int ppe_iterations = 0;
   double ppe_residual = 0;  // of the last step
   double wall_seconds = 0;  // wall-clock since run start (cumulative, survives resume)
+  int gas_ppe_iterations = 0;  // the gas system's solve in the last step (0 without open gas)
+  // Enclosed gas (bubbles, delta_gl = 1): how many, and the largest one (by particle count; all in bubbles.csv).
+  std::size_t bubbles = 0;
+  std::size_t bubble_particles = 0;
+  double bubble_pressure = 0;                         // its mean pressure [Pa]
+  double bubble_x = 0, bubble_y = 0, bubble_z = 0;    // its centroid [m]
+  double bubble_size = 0;                             // its area [m^2] (2D) or volume [m^3] (3D)
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

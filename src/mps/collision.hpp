@@ -4,6 +4,7 @@
 //   du_i = -(1 + e) * m_j / (m_i + m_j) * ((u_i - u_j) . n) n,   n = (r_j - r_i) / |r_j - r_i|
 // Evaluated Jacobi-style from the old velocities so the result does not depend on particle order or
 // thread count; the position is moved with the velocity change, r_i += dt du_i.
+// `affects(i, j)` says whether j may change i's velocity (the liquid ignores open gas, eqs. (5)-(8)).
 #pragma once
 
 #include <vector>
@@ -12,10 +13,10 @@
 
 namespace mistfall {
 
-template <int D>
+template <int D, class Affects>
 void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                        const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
-                       const NeighborList& nl, double distance, double restitution, double dt) {
+                       const NeighborList& nl, double distance, double restitution, double dt, Affects&& affects) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   const double d2 = distance * distance;
@@ -24,7 +25,7 @@ void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& veloc
     if (kind[i] != ParticleKind::Fluid) continue;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (!isActive(kind[j])) continue;
+      if (!isActive(kind[j]) || !affects(i, j)) continue;
       const Vec<D> rij = position[j] - position[i];
       const double r2 = rij.squaredNorm();
       if (r2 >= d2 || r2 <= 0.0) continue;
@@ -40,6 +41,14 @@ void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& veloc
     velocity[i] += change[i];
     position[i] += dt * change[i];
   }
+}
+
+template <int D>
+void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
+                       const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
+                       const NeighborList& nl, double distance, double restitution, double dt) {
+  resolveCollisions<D>(position, velocity, kind, mass, nl, distance, restitution, dt,
+                       [](std::int64_t, std::int32_t) { return true; });
 }
 
 }  // namespace mistfall

@@ -18,6 +18,18 @@ double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const
   return n;
 }
 
+// Number density counting only the neighbours `include(j)` admits (one phase's view in the two-phase model).
+template <int D, class Include>
+double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+                       Include&& include) {
+  double n = 0.0;
+  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+    const auto j = nl.indices[s];
+    if (include(j)) n += weight((position[j] - position[i]).norm(), re);
+  }
+  return n;
+}
+
 // Number density of every active particle (escaped particles get 0).
 template <int D>
 void computeNumberDensity(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,

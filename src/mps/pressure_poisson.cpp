@@ -9,16 +9,41 @@
 namespace mistfall {
 
 template <int D>
-void assemblePressureSystem(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
-                            const std::array<PhaseProperties, 2>& phases, const std::vector<char>& surface,
+PressureProblem singlePhaseProblem(const Particles<D>& p, const std::array<PhaseProperties, 2>& phases,
+                                   const std::vector<char>& surface) {
+  const std::size_t n = p.size();
+  PressureProblem problem;
+  problem.takes_part.resize(n);
+  problem.unknown.resize(n);
+  problem.carries_velocity.resize(n);
+  problem.density.resize(n);
+  problem.sound_speed.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = p.kind[i];
+    problem.takes_part[i] = k == ParticleKind::Fluid || k == ParticleKind::Wall;
+    problem.unknown[i] = problem.takes_part[i] && !surface[i];
+    problem.carries_velocity[i] = isActive(k);
+    const PhaseProperties& phase = phases[static_cast<int>(p.phase[i])];
+    problem.density[i] = phase.density;
+    problem.sound_speed[i] = phase.sound_speed;
+  }
+  problem.reference_density = phases[static_cast<int>(Phase::Liquid)].density;
+  return problem;
+}
+
+template <int D>
+void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& number_density,
+                            const NeighborList& nl, const MpsConstants& c, const PressureProblem& problem,
                             PressureSourceTerm source, double dt, PressureSystem& sys) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-  auto takesPart = [&](std::int64_t j) { return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall; };
+  const auto& takes_part = problem.takes_part;
+  const auto& rho = problem.density;
+  const double rho_ref = problem.reference_density;
 
   sys.row_of.assign(n, -1);
   sys.particle_of.clear();
   for (std::int64_t i = 0; i < n; ++i)
-    if (takesPart(i) && !surface[i]) {
+    if (problem.unknown[i]) {
       sys.row_of[i] = static_cast<std::int32_t>(sys.particle_of.size());
       sys.particle_of.push_back(static_cast<std::int32_t>(i));
     }
@@ -51,51 +76,55 @@ void assemblePressureSystem(const Particles<D>& p, const NeighborList& nl, const
 #pragma omp parallel for schedule(static)
   for (std::int64_t r = 0; r < rows; ++r) {
     const auto i = sys.particle_of[r];
-    const PhaseProperties& phase = phases[static_cast<int>(p.phase[i])];
     std::int64_t at = start[r];
     const std::int64_t diagonal_at = at++;
     double diagonal = 0.0;
-    // Neighbour lists are sorted by cell, not by index: insert keeping the row's columns ascending.
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (!takesPart(j)) continue;
+      if (!takes_part[j]) continue;
       const double w = weight((p.position[j] - p.position[i]).norm(), re);
       if (w <= 0.0) continue;
-      diagonal += factor * w;
+      const double k = factor * (rho[i] == rho[j] ? rho_ref / rho[i] : 2.0 * rho_ref / (rho[i] + rho[j]));
+      diagonal += k * w;
       if (sys.row_of[j] >= 0) {
         inner[at] = sys.row_of[j];
-        value[at] = -factor * w;
+        value[at] = -k * w;
         ++at;
       }
     }
-    if (std::isfinite(phase.sound_speed)) diagonal += 1.0 / (dt * dt * phase.sound_speed * phase.sound_speed);
+    const double ci = problem.sound_speed[i];
+    if (std::isfinite(ci)) diagonal += rho_ref / rho[i] / (dt * dt * ci * ci);
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
-    // Sort the row's entries by column (Eigen requires ordered inner indices).
+    // Neighbour lists are sorted by cell, not by index: sort the row's columns (Eigen requires it).
     std::vector<std::pair<int, double>> entries;
     entries.reserve(at - start[r]);
-    for (std::int64_t k = start[r]; k < at; ++k) entries.emplace_back(inner[k], value[k]);
+    for (std::int64_t e = start[r]; e < at; ++e) entries.emplace_back(inner[e], value[e]);
     std::sort(entries.begin(), entries.end());
-    for (std::int64_t k = start[r]; k < at; ++k) {
-      inner[k] = entries[k - start[r]].first;
-      value[k] = entries[k - start[r]].second;
+    for (std::int64_t e = start[r]; e < at; ++e) {
+      inner[e] = entries[e - start[r]].first;
+      value[e] = entries[e - start[r]].second;
     }
-    const double compression = (p.number_density[i] - c.n0) / c.n0;
+    const double compression = (number_density[i] - c.n0) / c.n0;
     if (source.kind == PressureSource::Standard) {
-      sys.rhs[r] = phase.density / (dt * dt) * compression;
+      sys.rhs[r] = rho_ref / (dt * dt) * compression;
     } else {
-      auto carriesVelocity = [&](std::int32_t j) { return isActive(p.kind[j]); };
+      auto carriesVelocity = [&](std::int32_t j) { return problem.carries_velocity[j] != 0; };
       const double divergence = divergenceAt<D>(i, p.position, p.velocity, nl, c, carriesVelocity);
-      sys.rhs[r] = -phase.density / dt * divergence + source.relaxation * phase.density / (dt * dt) * compression;
+      sys.rhs[r] = -rho_ref / dt * divergence + source.relaxation * rho_ref / (dt * dt) * compression;
     }
   }
 }
 
-template void assemblePressureSystem<2>(const Particles<2>&, const NeighborList&, const MpsConstants&,
-                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&,
-                                        PressureSourceTerm, double, PressureSystem&);
-template void assemblePressureSystem<3>(const Particles<3>&, const NeighborList&, const MpsConstants&,
-                                        const std::array<PhaseProperties, 2>&, const std::vector<char>&,
-                                        PressureSourceTerm, double, PressureSystem&);
+template PressureProblem singlePhaseProblem<2>(const Particles<2>&, const std::array<PhaseProperties, 2>&,
+                                               const std::vector<char>&);
+template PressureProblem singlePhaseProblem<3>(const Particles<3>&, const std::array<PhaseProperties, 2>&,
+                                               const std::vector<char>&);
+template void assemblePressureSystem<2>(const Particles<2>&, const std::vector<double>&, const NeighborList&,
+                                        const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
+                                        PressureSystem&);
+template void assemblePressureSystem<3>(const Particles<3>&, const std::vector<double>&, const NeighborList&,
+                                        const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
+                                        PressureSystem&);
 
 }  // namespace mistfall

@@ -11,6 +11,7 @@
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
+#include "mps/pressure_acceleration.hpp"
 #include "mps/time_step.hpp"
 
 namespace mistfall {
@@ -65,16 +66,26 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
   buildNeighbours();
+  findBubbles();
   const double dt = chooseTimeStepFor(until);
   predict(dt);
   collide(dt);
   buildNeighbours();
-  computeNumberDensity();
-  const double tp = omp_get_wtime();
-  solvePressure(dt);
-  extrapolateDummyPressure();
+  // The liquid system, eqs. (5), (7): liquid, walls and enclosed gas.
+  computeLiquidNumberDensity();
+  double tp = omp_get_wtime();
+  solveLiquidPressure(dt);
+  extrapolateDummyPressure(state_.particles.pressure, phases_[static_cast<int>(Phase::Liquid)].density);
   report_.seconds_pressure = omp_get_wtime() - tp;
-  correct(dt);
+  correctLiquid(dt);
+  // The gas system, eqs. (6), (8): open gas, the moved liquid as its walls.
+  if (roles_.open_gas_count > 0) {
+    buildNeighbours();
+    tp = omp_get_wtime();
+    solveGasPressure(dt);
+    report_.seconds_pressure += omp_get_wtime() - tp;
+    correctGas(dt);
+  }
   markEscaped();
   state_.time = (until - state_.time <= dt) ? until : state_.time + dt;
   state_.step += 1;
@@ -83,6 +94,28 @@ const StepReport& MpsSolver<D>::step(double until) {
   checkHealth(dt);
   report_.seconds_total = omp_get_wtime() - t0;
   return report_;
+}
+
+// delta_gl of eq. (7): which gas regions are enclosed by liquid (enclosed_gas.hpp), then the roles of the
+// particles in the two pressure systems. Without gas every active particle belongs to the liquid system.
+template <int D>
+void MpsSolver<D>::findBubbles() {
+  if (phase_present_[static_cast<int>(Phase::Gas)]) {
+    findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions_);
+    for (char e : regions_.enclosed) report_.bubbles += (e != 0);
+  } else {
+    regions_ = GasRegions{};
+  }
+  assignCouplingRoles<D>(state_.particles, regions_, roles_);
+}
+
+template <int D>
+std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
+  if (!phase_present_[static_cast<int>(Phase::Gas)]) return {};
+  buildNeighbours();
+  GasRegions regions;
+  findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions);
+  return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 
 template <int D>
@@ -118,13 +151,19 @@ void MpsSolver<D>::predict(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> acceleration(n, Vec<D>::Zero());
+  // The liquid's viscous term ignores the gas; the gas sees liquid and walls as walls moving with their velocity.
   auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
+  auto notGas = [&](std::int32_t j) { return isActive(p.kind[j]) && !isGas(p.kind[j], p.phase[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
     const double nu = phases_[static_cast<int>(p.phase[i])].kinematic_viscosity;
     acceleration[i] = gravity_;
-    if (nu > 0.0) acceleration[i] += nu * laplacianAt<D>(i, p.position, p.velocity, neighbours_, constants_, active);
+    if (nu <= 0.0) continue;
+    if (p.phase[i] == Phase::Gas)
+      acceleration[i] += nu * laplacianAt<D>(i, p.position, p.velocity, neighbours_, constants_, active);
+    else
+      acceleration[i] += nu * laplacianAt<D>(i, p.position, p.velocity, neighbours_, constants_, notGas);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -140,50 +179,89 @@ void MpsSolver<D>::collide(double dt) {
   auto& p = state_.particles;
   std::vector<double> mass(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
+  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
+  const auto& open_gas = roles_.open_gas;
+  auto affects = [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); };
   resolveCollisions<D>(p.position, p.velocity, p.kind, mass, neighbours_,
-                       config_.numerics.collision_distance * constants_.l0, config_.numerics.collision_restitution, dt);
+                       config_.numerics.collision_distance * constants_.l0, config_.numerics.collision_restitution, dt,
+                       affects);
+}
+
+// n* of the liquid system: open gas does not count (the liquid next to it is a free surface).
+template <int D>
+void MpsSolver<D>::computeLiquidNumberDensity() {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  p.number_density.resize(n);
+  const auto& in_system = roles_.in_liquid_system;
+  auto counts = [&](std::int32_t j) { return in_system[j] != 0; };
+  const double re = constants_.re_number_density;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i)
+    p.number_density[i] = in_system[i] ? numberDensityAt<D>(i, p.position, neighbours_, re, counts) : 0.0;
 }
 
 template <int D>
-void MpsSolver<D>::computeNumberDensity() {
-  auto& p = state_.particles;
-  mistfall::computeNumberDensity<D>(p.position, p.kind, neighbours_, constants_.re_number_density, p.number_density);
-}
-
-// Implicit stage: assemble and solve eq. (9) (eq. (17) for a phase with finite sound speed).
-template <int D>
-void MpsSolver<D>::solvePressure(double dt) {
-  auto& p = state_.particles;
-  const auto surface = freeSurfaceFlags(p, config_.numerics.surface_threshold, constants_.n0);
-  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
-  assemblePressureSystem<D>(p, neighbours_, constants_, phases_, surface, source, dt, system_);
+void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* which, int& iterations) {
   const auto rows = system_.particle_of.size();
   pressure_unknowns_.resize(rows);
-  for (std::size_t r = 0; r < rows; ++r) pressure_unknowns_[r] = p.pressure[system_.particle_of[r]];
+  for (std::size_t r = 0; r < rows; ++r) pressure_unknowns_[r] = guess[system_.particle_of[r]];
   const auto result = linear_solver_->solve(system_.matrix, system_.rhs, pressure_unknowns_);
-  report_.ppe_iterations = result.iterations;
-  report_.ppe_residual = result.relative_residual;
-  report_.ppe_unknowns = rows;
+  iterations = result.iterations;
   if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
     std::ostringstream msg;
-    msg << "pressure solve (" << linear_solver_->name() << ") did not converge: relative residual "
+    msg << which << " pressure solve (" << linear_solver_->name() << ") did not converge: relative residual "
         << result.relative_residual << " after " << result.iterations << " iterations ("
         << "numerics.solver_tolerance = " << config_.numerics.solver_tolerance << ")";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }
-  std::fill(p.pressure.begin(), p.pressure.end(), 0.0);
+  report_.ppe_residual = std::max(report_.ppe_residual, result.relative_residual);
+}
+
+// The liquid system: eq. (9) for liquid and walls, eq. (17) for the enclosed gas, coupled by the
+// variable-density Laplacian (pressure_poisson.hpp). Unknowns: liquid, wall and enclosed gas particles off the
+// free surface.
+template <int D>
+void MpsSolver<D>::solveLiquidPressure(double dt) {
+  auto& p = state_.particles;
+  const std::size_t n = p.size();
+  const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
+  const PhaseProperties& liquid = phases_[static_cast<int>(Phase::Liquid)];
+  const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
+  problem_.takes_part.assign(n, 0);
+  problem_.unknown.assign(n, 0);
+  problem_.carries_velocity = roles_.in_liquid_system;
+  problem_.density.assign(n, liquid.density);
+  problem_.sound_speed.assign(n, liquid.sound_speed);
+  problem_.reference_density = liquid.density;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = p.kind[i];
+    problem_.takes_part[i] = roles_.in_liquid_system[i] && (k == ParticleKind::Fluid || k == ParticleKind::Wall);
+    problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
+    if (isGas(k, p.phase[i])) {
+      problem_.density[i] = gas.density;
+      problem_.sound_speed[i] = gas.sound_speed;
+    }
+  }
+  density_ = problem_.density;
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
+  solveSystem(p.pressure, "liquid", report_.ppe_iterations);
+  report_.ppe_unknowns = system_.particle_of.size();
   // Negative pressures are set to zero (standard MPS: the liquid does not sustain tension).
-  for (std::size_t r = 0; r < rows; ++r) p.pressure[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
+  for (std::size_t i = 0; i < n; ++i)
+    if (roles_.in_liquid_system[i]) p.pressure[i] = 0.0;
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r)
+    p.pressure[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
 }
 
 // Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
 // gradient (without them the min-pressure term pushes that fluid into the wall). Each takes the pressure of its
 // nearest wall particle, extrapolated hydrostatically: p_d = p_w + rho g . (r_d - r_w), clamped at 0.
 template <int D>
-void MpsSolver<D>::extrapolateDummyPressure() {
-  auto& p = state_.particles;
+void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, double rho) const {
+  const auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Dummy) continue;
@@ -195,33 +273,98 @@ void MpsSolver<D>::extrapolateDummyPressure() {
       const double r2 = (p.position[j] - p.position[i]).squaredNorm();
       if (r2 < best) best = r2, nearest = j;
     }
-    p.pressure[i] =
+    pressure[i] =
         nearest < 0 ? 0.0
-                    : std::max(0.0, p.pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]));
+                    : std::max(0.0, pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]));
   }
 }
 
-// Correction: u' = -dt/rho grad p (minimum-neighbour form), u = u* + u', r = r* + dt u'.
+// Correction of the liquid and the enclosed gas: u' = -dt (1/rho) grad p (pressure_acceleration.hpp),
+// u = u* + u', r = r* + dt u'.
 template <int D>
-void MpsSolver<D>::correct(double dt) {
+void MpsSolver<D>::correctLiquid(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
+  const auto& in_system = roles_.in_liquid_system;
   auto solvedPressure = [&](std::int32_t j) {
-    return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall;
+    return in_system[j] && (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall);
   };
-  auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
+  auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
-    const double rho = phases_[static_cast<int>(p.phase[i])].density;
-    change[i] = -dt / rho *
-                gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_, GradientForm::MinimumNeighbour,
-                              carriesPressure, solvedPressure);
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i]) continue;
+    change[i] = dt * pressureAccelerationAt<D>(i, p.position, p.pressure, density_, neighbours_, constants_,
+                                               carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i]) continue;
+    p.velocity[i] += change[i];
+    p.position[i] += dt * change[i];
+  }
+}
+
+// The gas system, eq. (17) with the gas's sound speed: open gas particles, and as its walls every wall, liquid or
+// enclosed gas particle within re of open gas (at the liquid's corrected positions). n* counts every particle.
+template <int D>
+void MpsSolver<D>::solveGasPressure(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  markGasSideWalls<D>(p, neighbours_, constants_.re_number_density, roles_);
+  const double re = constants_.re_number_density;
+  gas_number_density_.assign(n, 0.0);
+  auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i)
+    if (roles_.open_gas[i] || roles_.gas_side_wall[i])
+      gas_number_density_[i] = numberDensityAt<D>(i, p.position, neighbours_, re, active);
+  const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
+  const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
+  problem_.takes_part.assign(n, 0);
+  problem_.unknown.assign(n, 0);
+  problem_.carries_velocity.assign(n, 0);
+  problem_.density.assign(n, gas.density);
+  problem_.sound_speed.assign(n, gas.sound_speed);
+  problem_.reference_density = gas.density;
+  for (std::int64_t i = 0; i < n; ++i) {
+    problem_.takes_part[i] = roles_.open_gas[i] || roles_.gas_side_wall[i];
+    problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0;
+    problem_.carries_velocity[i] = isActive(p.kind[i]);
+  }
+  gas_density_ = problem_.density;
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_);
+  solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
+  report_.gas_ppe_unknowns = system_.particle_of.size();
+  gas_pressure_.assign(n, 0.0);
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r)
+    gas_pressure_[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
+  extrapolateDummyPressure(gas_pressure_, gas.density);
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.open_gas[i]) continue;
+    p.pressure[i] = gas_pressure_[i];
+    p.number_density[i] = gas_number_density_[i];
+  }
+}
+
+// Correction of the open gas with the gas system's pressures (the liquid is not moved by it).
+template <int D>
+void MpsSolver<D>::correctGas(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  std::vector<Vec<D>> change(n, Vec<D>::Zero());
+  auto solvedPressure = [&](std::int32_t j) { return roles_.open_gas[j] || roles_.gas_side_wall[j]; };
+  auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.open_gas[i]) continue;
+    change[i] = dt * pressureAccelerationAt<D>(i, p.position, gas_pressure_, gas_density_, neighbours_, constants_,
+                                               carriesPressure, solvedPressure);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.open_gas[i]) continue;
     p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }

@@ -1,7 +1,11 @@
-// The MPS time step (semi-implicit two-step method of Koshizuka & Oka, MODEL.md section 1):
-//   buildNeighbours -> chooseTimeStep -> predict (viscosity + gravity, explicit) -> collide
-//   -> buildNeighbours at r* -> numberDensity n* -> solvePressure (eq. (9)/(17)) -> extrapolateDummyPressure
-//   -> correct (-dt/rho grad p)
+// The MPS time step (semi-implicit two-step method of Koshizuka & Oka, MODEL.md section 1), with the gas-liquid
+// coupling of eqs. (5)-(8) (docs/two-phase.md):
+//   buildNeighbours -> findBubbles (delta_gl) -> chooseTimeStep -> predict (viscosity + gravity, explicit)
+//   -> collide -> buildNeighbours at r*
+//   -> liquid system: numberDensity n* -> solveLiquidPressure (eq. (9), (17) for enclosed gas)
+//      -> extrapolateDummyPressure -> correctLiquid (-dt/rho grad p)
+//   -> gas system (when open gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
+//      -> correctGas
 //   -> markEscaped -> checkHealth
 #pragma once
 
@@ -11,7 +15,9 @@
 #include <string>
 
 #include "case/case_config.hpp"
+#include "mps/enclosed_gas.hpp"
 #include "mps/linear_solver.hpp"
+#include "mps/phase_coupling.hpp"
 #include "mps/neighbor_search.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "mps/reference_density.hpp"
@@ -39,6 +45,9 @@ struct StepReport {
   std::size_t ppe_unknowns = 0;
   double seconds_total = 0.0;     // wall time of the step
   double seconds_pressure = 0.0;  // of which assembling and solving the PPE
+  int gas_ppe_iterations = 0;      // the gas system (0 when there is no open gas)
+  std::size_t gas_ppe_unknowns = 0;
+  std::size_t bubbles = 0;         // enclosed gas regions at the start of the step
 };
 
 template <int D>
@@ -54,16 +63,23 @@ class MpsSolver {
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   double particleMass(std::size_t i) const;
+  // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).
+  std::vector<BubbleStats> currentBubbles();
 
  private:
   void buildNeighbours();
   double chooseTimeStepFor(double until) const;
   void predict(double dt);
   void collide(double dt);
-  void computeNumberDensity();
-  void solvePressure(double dt);
-  void extrapolateDummyPressure();
-  void correct(double dt);
+  void findBubbles();
+  void computeLiquidNumberDensity();
+  void solveLiquidPressure(double dt);
+  void extrapolateDummyPressure(std::vector<double>& pressure, double density) const;
+  void correctLiquid(double dt);
+  void solveGasPressure(double dt);
+  void correctGas(double dt);
+  // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
+  void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
   void markEscaped();
   void checkHealth(double dt) const;
 
@@ -77,6 +93,13 @@ class MpsSolver {
   std::array<bool, 2> phase_present_{false, false};
   NeighborSearch<D> search_;
   NeighborList neighbours_;
+  GasRegions regions_;
+  CouplingRoles roles_;
+  PressureProblem problem_;
+  std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
+  std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
+  std::vector<double> density_;             // rho_i of the liquid system
+  std::vector<double> gas_density_;         // rho_g for every particle (the gas system is one-density)
   PressureSystem system_;
   Eigen::VectorXd pressure_unknowns_;
   std::unique_ptr<LinearSolver> linear_solver_;

@@ -1,0 +1,295 @@
+// The gas-liquid coupling, eqs. (5)-(8) and (17) (docs/two-phase.md): the variable-density pressure system, the
+// pressure acceleration, the roles of the particles, and a tank of still water with air above it (the liquid
+// must not see the open gas at all; the gas must stay above the water, every particle accounted for).
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "mps/gradient.hpp"
+#include "mps/number_density.hpp"
+#include "mps/phase_coupling.hpp"
+#include "mps/pressure_acceleration.hpp"
+#include "mps/pressure_poisson.hpp"
+#include "mps/solver.hpp"
+
+using namespace mistfall;
+
+namespace {
+
+// A 2D tank 0.1 m wide, water 0.06 m deep, air up to 0.09 m, l0 = 5 mm; optionally a gas disc (bubble) in the
+// water and optionally without the air. Mixed source term (still water, as cases/hydrostatic.toml).
+std::string tankCase(bool air, bool bubble, const std::string& gas_sound_speed = "340.0") {
+  std::string text = R"(
+[case]
+name = "two_phase_tank"
+dimension = 2
+[domain]
+min = [-0.02, -0.02]
+max = [0.12, 0.12]
+[physics.gas]
+sound_speed = )" + gas_sound_speed + R"(
+[numerics]
+particle_spacing = 0.005
+dt_max = 5e-4
+pressure_source = "mixed"
+source_relaxation = 0.01
+[output]
+end_time = 1.0
+)";
+  if (air) text += "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.09]\n";
+  text += "[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.06]\n";
+  if (bubble)
+    text += "[[region]]\nname = \"bubble\"\nmaterial = \"gas\"\nshape = \"circle\"\ncenter = [0.05, 0.03]\n"
+            "radius = 0.0125\n";
+  text += R"(
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.12, 0.0]
+[[region]]
+name = "left"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.0, 0.09]
+[[region]]
+name = "right"
+material = "wall"
+min = [0.1, -0.02]
+max = [0.12, 0.09]
+)";
+  return text;
+}
+
+struct TankRun {
+  CaseConfig config;
+  SimulationState<2> state;
+  std::unique_ptr<MpsSolver<2>> solver;
+  explicit TankRun(const std::string& text) : config(parseCase(text, "two_phase_tank.toml")) {
+    state.particles = buildParticles<2>(config);
+    solver = std::make_unique<MpsSolver<2>>(config, state);
+  }
+};
+
+// The liquid system of a tank with a bubble, assembled as the solver does (enclosed gas rows with rho_g, c_g).
+struct BubbleSystem {
+  TankRun s{tankCase(false, true)};
+  GasRegions regions;
+  CouplingRoles roles;
+  std::vector<double> n;
+  BubbleSystem() {
+    s.solver->currentBubbles();  // builds the neighbour list at the initial positions
+    const auto& p = s.state.particles;
+    findGasRegions<2>(p, s.solver->neighbours(), s.solver->constants().re_number_density, 0.005, regions);
+    assignCouplingRoles<2>(p, regions, roles);
+    n.resize(p.size());
+    auto counts = [&](std::int32_t j) { return roles.in_liquid_system[j] != 0; };
+    for (std::size_t i = 0; i < p.size(); ++i)
+      n[i] = numberDensityAt<2>(i, p.position, s.solver->neighbours(), s.solver->constants().re_number_density,
+                                counts) *
+             (1.0 + 1e-3 * std::sin(37.0 * i));  // a non-trivial n* field
+  }
+  PressureProblem problem(double gas_sound_speed) const {
+    const auto& p = s.state.particles;
+    PressureProblem pr;
+    const std::size_t count = p.size();
+    pr.takes_part.assign(count, 0);
+    pr.unknown.assign(count, 0);
+    pr.carries_velocity = roles.in_liquid_system;
+    pr.density.assign(count, 1000.0);
+    pr.sound_speed.assign(count, std::numeric_limits<double>::infinity());
+    pr.reference_density = 1000.0;
+    for (std::size_t i = 0; i < count; ++i) {
+      pr.takes_part[i] = roles.in_liquid_system[i] && p.kind[i] != ParticleKind::Dummy;
+      pr.unknown[i] = pr.takes_part[i] && n[i] >= 0.97 * s.solver->constants().n0;
+      if (isGas(p.kind[i], p.phase[i])) pr.density[i] = 1.2, pr.sound_speed[i] = gas_sound_speed;
+    }
+    return pr;
+  }
+  PressureSystem assemble(double gas_sound_speed, double dt) const {
+    PressureSystem sys;
+    assemblePressureSystem<2>(s.state.particles, n, s.solver->neighbours(), s.solver->constants(),
+                              problem(gas_sound_speed), PressureSourceTerm{}, dt, sys);
+    return sys;
+  }
+};
+
+Eigen::VectorXd solveExactly(const PressureSystem& sys) {
+  const Eigen::SparseMatrix<double> a = sys.matrix;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  EXPECT_EQ(ldlt.info(), Eigen::Success);
+  return ldlt.solve(sys.rhs);
+}
+
+}  // namespace
+
+TEST(TwoPhaseRoles, BubbleJoinsTheLiquidSystemOpenAirDoesNot) {
+  TankRun s(tankCase(true, true));
+  s.solver->currentBubbles();
+  const auto& p = s.state.particles;
+  GasRegions regions;
+  findGasRegions<2>(p, s.solver->neighbours(), s.solver->constants().re_number_density, 0.005, regions);
+  CouplingRoles roles;
+  assignCouplingRoles<2>(p, regions, roles);
+  markGasSideWalls<2>(p, s.solver->neighbours(), s.solver->constants().re_number_density, roles);
+  std::size_t bubble_gas = 0, air = 0, liquid_walls = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double y = p.position[i][1];
+    if (isGas(p.kind[i], p.phase[i])) {
+      const bool in_bubble = y < 0.06;
+      EXPECT_EQ(!in_bubble, roles.open_gas[i] != 0) << "gas particle at y = " << y;
+      EXPECT_EQ(in_bubble, roles.in_liquid_system[i] != 0);
+      (in_bubble ? bubble_gas : air) += 1;
+    } else if (p.kind[i] == ParticleKind::Fluid) {
+      EXPECT_TRUE(roles.in_liquid_system[i]);
+      // Liquid within re = 2.1 l0 of the air (the top two rows) is a wall of the gas system; no deeper liquid.
+      EXPECT_EQ(y > 0.06 - 2.1 * 0.005, roles.gas_side_wall[i] != 0) << "liquid at y = " << y;
+      liquid_walls += roles.gas_side_wall[i];
+    } else if (p.kind[i] == ParticleKind::Dummy) {
+      EXPECT_FALSE(roles.gas_side_wall[i]);
+    }
+  }
+  EXPECT_GT(bubble_gas, 15u);
+  EXPECT_EQ(air, 20u * 6u);
+  EXPECT_EQ(liquid_walls, 20u * 2u);
+  EXPECT_EQ(roles.open_gas_count, air);
+}
+
+TEST(TwoPhasePressure, OneDensityProblemIsTheSinglePhaseSystem) {
+  // Scaling every density and rho_ref together leaves the system unchanged: k_ij = rho_ref / rho = 1.
+  BubbleSystem b;
+  auto pr = b.problem(std::numeric_limits<double>::infinity());
+  std::fill(pr.density.begin(), pr.density.end(), 1000.0);
+  PressureSystem one;
+  assemblePressureSystem<2>(b.s.state.particles, b.n, b.s.solver->neighbours(), b.s.solver->constants(), pr,
+                            PressureSourceTerm{}, 1e-3, one);
+  std::fill(pr.density.begin(), pr.density.end(), 7.0);
+  pr.reference_density = 7.0;
+  PressureSystem other;
+  assemblePressureSystem<2>(b.s.state.particles, b.n, b.s.solver->neighbours(), b.s.solver->constants(), pr,
+                            PressureSourceTerm{}, 1e-3, other);
+  EXPECT_LT((one.matrix - other.matrix).norm(), 1e-12 * one.matrix.norm());
+  EXPECT_LT((one.rhs / 1000.0 - other.rhs / 7.0).norm(), 1e-12 * (one.rhs / 1000.0).norm());
+}
+
+TEST(TwoPhasePressure, VariableDensitySystemIsSymmetricWithPairDensityWeights) {
+  BubbleSystem b;
+  const auto sys = b.assemble(340.0, 1e-3);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> transpose = sys.matrix.transpose();
+  EXPECT_LT((sys.matrix - transpose).norm(), 1e-12 * sys.matrix.norm());
+  // A liquid-liquid, a gas-gas and a liquid-gas pair at the same distance: weights 1, rho_l/rho_g, 2 rho_l/(rho_l+rho_g).
+  const auto& p = b.s.state.particles;
+  double ll = 0, gg = 0, lg = 0;
+  for (Eigen::Index r = 0; r < sys.matrix.rows(); ++r) {
+    const auto i = sys.particle_of[r];
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(sys.matrix, r); it; ++it) {
+      const auto j = sys.particle_of[it.col()];
+      if (j == i || std::abs((p.position[j] - p.position[i]).norm() - 0.005) > 1e-9) continue;
+      const bool gi = p.phase[i] == Phase::Gas && p.kind[i] == ParticleKind::Fluid;
+      const bool gj = p.phase[j] == Phase::Gas && p.kind[j] == ParticleKind::Fluid;
+      (gi && gj ? gg : (gi || gj) ? lg : ll) = -it.value();
+    }
+  }
+  ASSERT_GT(ll, 0.0);
+  EXPECT_NEAR(gg / ll, 1000.0 / 1.2, 1e-9 * gg / ll);
+  EXPECT_NEAR(lg / ll, 2000.0 / 1001.2, 1e-12);
+}
+
+TEST(TwoPhasePressure, CompressibleGasRowsTendToIncompressibleAsSoundSpeedGrows) {
+  // Eq. (17) on the enclosed gas: only the gas rows' diagonal changes, by rho_ref / (rho_g dt^2 c^2), and the
+  // solution approaches the incompressible one as 1/c^2.
+  BubbleSystem b;
+  const double dt = 1e-3;
+  const auto inc = b.assemble(std::numeric_limits<double>::infinity(), dt);
+  const Eigen::VectorXd p_inf = solveExactly(inc);
+  const auto& p = b.s.state.particles;
+  std::vector<double> gaps;
+  // The bubble's mean pressure is held by its weak coupling to the liquid; the 1/c^2 regime starts once the gas
+  // term is small against it (here from c ~ 1e4 m/s with dt = 1e-3 s).
+  for (double c : {1e4, 1e5, 1e6, 1e7}) {
+    const auto sys = b.assemble(c, dt);
+    ASSERT_EQ(sys.matrix.nonZeros(), inc.matrix.nonZeros());
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> diff = sys.matrix - inc.matrix;
+    for (Eigen::Index r = 0; r < diff.rows(); ++r) {
+      const auto i = sys.particle_of[r];
+      const double expected = p.phase[i] == Phase::Gas ? 1000.0 / 1.2 / (dt * dt * c * c) : 0.0;
+      EXPECT_NEAR(diff.coeff(r, r), expected, 1e-9 * expected + 1e-14 * inc.matrix.coeff(r, r));
+    }
+    EXPECT_NEAR(diff.norm(), std::sqrt(diff.diagonal().squaredNorm()), 1e-9 * diff.norm());
+    gaps.push_back((solveExactly(sys) - p_inf).norm() / p_inf.norm());
+  }
+  for (std::size_t k = 1; k < gaps.size(); ++k) EXPECT_LT(gaps[k], gaps[k - 1] / 50.0) << "c step " << k;
+  EXPECT_LT(gaps.back(), 1e-8);
+
+}
+
+TEST(TwoPhasePressure, OneDensityAccelerationIsMinusGradientOverDensity) {
+  TankRun s(tankCase(false, false));
+  for (int k = 0; k < 3; ++k) s.solver->step(1.0);
+  const auto& p = s.state.particles;
+  s.solver->currentBubbles();
+  const std::vector<double> density(p.size(), 1000.0);
+  auto all = [&](std::int32_t j) { return isActive(p.kind[j]); };
+  auto solved = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall; };
+  double scale = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    const Vec<2> a = pressureAccelerationAt<2>(i, p.position, p.pressure, density, s.solver->neighbours(),
+                                               s.solver->constants(), all, solved);
+    const Vec<2> g = gradientAt<2>(i, p.position, p.pressure, s.solver->neighbours(), s.solver->constants(),
+                                   GradientForm::MinimumNeighbour, all, solved);
+    EXPECT_LT((a + g / 1000.0).norm(), 1e-12 * (1.0 + g.norm() / 1000.0));
+    scale = std::max(scale, g.norm());
+  }
+  EXPECT_GT(scale, 1000.0);  // the tank's pressure gradient is not trivially zero
+}
+
+TEST(TwoPhaseTank, LiquidIgnoresOpenAirAndAirStaysAbove) {
+  // Eqs. (5)-(8): the liquid does not see open gas. The same tank with and without air must give the same liquid
+  // motion bit for bit (the time step is dt_max in both). The air stays above the water, no particle is lost.
+  TankRun with_air(tankCase(true, false));
+  TankRun without(tankCase(false, false));
+  const auto& pa = with_air.state.particles;
+  const auto& pw = without.state.particles;
+  std::size_t gas0 = 0;
+  for (std::size_t i = 0; i < pa.size(); ++i) gas0 += isGas(pa.kind[i], pa.phase[i]);
+  ASSERT_EQ(gas0, 120u);
+  std::vector<std::size_t> liquid_a, liquid_w;
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    if (pa.kind[i] == ParticleKind::Fluid && pa.phase[i] == Phase::Liquid) liquid_a.push_back(i);
+  for (std::size_t i = 0; i < pw.size(); ++i)
+    if (pw.kind[i] == ParticleKind::Fluid) liquid_w.push_back(i);
+  ASSERT_EQ(liquid_a.size(), liquid_w.size());
+  double max_gas_speed = 0;
+  int gas_iterations = 0;
+  for (int step = 0; step < 100; ++step) {
+    const auto& ra = with_air.solver->step(1.0);
+    const auto& rw = without.solver->step(1.0);
+    ASSERT_EQ(ra.dt, rw.dt);
+    gas_iterations = std::max(gas_iterations, ra.gas_ppe_iterations);
+    EXPECT_EQ(rw.gas_ppe_iterations, 0);
+    for (std::size_t i = 0; i < pa.size(); ++i)
+      if (isGas(pa.kind[i], pa.phase[i])) max_gas_speed = std::max(max_gas_speed, pa.velocity[i].norm());
+  }
+  EXPECT_GT(gas_iterations, 0);  // the gas system was solved
+  for (std::size_t k = 0; k < liquid_a.size(); ++k) {
+    ASSERT_EQ(pa.position[liquid_a[k]], pw.position[liquid_w[k]]) << "liquid particle " << k;
+    ASSERT_EQ(pa.pressure[liquid_a[k]], pw.pressure[liquid_w[k]]);
+  }
+  // Mass of each phase: every particle still there, none escaped, none changed phase.
+  std::size_t gas = 0, liquid = 0;
+  double lowest_gas = 1.0, highest_liquid = 0.0;
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    ASSERT_NE(pa.kind[i], ParticleKind::Escaped);
+    if (pa.kind[i] != ParticleKind::Fluid) continue;
+    if (pa.phase[i] == Phase::Gas) ++gas, lowest_gas = std::min(lowest_gas, pa.position[i][1]);
+    else ++liquid, highest_liquid = std::max(highest_liquid, pa.position[i][1]);
+  }
+  EXPECT_EQ(gas, gas0);
+  EXPECT_EQ(liquid, liquid_a.size());
+  EXPECT_GT(lowest_gas, highest_liquid);  // the air has not mixed into the water
+  EXPECT_LT(max_gas_speed, 0.1) << "still air over still water";
+}
