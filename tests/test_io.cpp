@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli/progress.hpp"
+#include "io/bubble_log.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/pvd_collection.hpp"
@@ -409,4 +410,40 @@ TEST(Progress, TerminalModeThrottlesAndLogsCleanly) {
   EXPECT_EQ('\r', s[hello + 6]);               // and redrawn after it
   r.finish();
   EXPECT_EQ('\n', out.str().back());
+}
+
+TEST(BubbleLog, WritesEveryBubbleAndKeepsEarlierLinesOnResume) {
+  const fs::path dir = freshDir("bubble_log");
+  const fs::path file = dir / "bubbles.csv";
+  BubbleStats a;
+  a.region = 0, a.particles = 256, a.mean_pressure = 563.5, a.centroid = {0.1, 0.0925, 0.0}, a.size = 1.6e-3;
+  BubbleStats b = a;
+  b.region = 3, b.particles = 1, b.mean_pressure = 12.0;
+  auto lines = [&]() {
+    std::ifstream in(file);
+    std::vector<std::string> out;
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  };
+  {
+    BubbleLog log(file);
+    log.append(0.0, {a, b});
+    log.append(0.1, {});
+    log.append(0.2, {a});
+  }
+  auto all = lines();
+  ASSERT_EQ(4u, all.size());
+  EXPECT_EQ(BubbleLog::header(), all[0]);
+  EXPECT_EQ(0u, all[1].rfind("0,0,256,563.5,0.1,0.0925,0,0.0016", 0)) << all[1];
+  EXPECT_EQ(0u, all[2].rfind("0,3,1,12,", 0)) << all[2];
+  EXPECT_EQ(0u, all[3].rfind("0.2", 0)) << all[3];
+  {
+    BubbleLog resumed(file, 0.1);  // the line at t = 0.2 is dropped
+    resumed.append(0.15, {b});
+  }
+  all = lines();
+  ASSERT_EQ(4u, all.size());
+  EXPECT_EQ(0.15, std::stod(all[3].substr(0, all[3].find(',')))) << all[3];
+  EXPECT_NE(std::string::npos, all[3].find(",3,1,12,")) << all[3];
+  EXPECT_TRUE(noTmpFiles(dir));
 }
