@@ -2,16 +2,17 @@
 // equation, and agreement of the two linear solvers on a real system.
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <cstdio>
 
 #include "mps/linear_solver.hpp"
 #include "mps/number_density.hpp"
 #include "mps/pressure_poisson.hpp"
+#include "support/exact_solve.hpp"
 #include "support/run_case.hpp"
 
 using namespace mistfall;
+using test_support::solveExactly;
 
 namespace {
 
@@ -46,13 +47,6 @@ Eigen::VectorXd solveWith(PressureSolverKind kind, const PressureSystem& sys) {
   return x;
 }
 
-// Direct solve, so the limit below is not blurred by an iterative solver's tolerance.
-Eigen::VectorXd solveExactly(const PressureSystem& sys) {
-  const Eigen::SparseMatrix<double> a = sys.matrix;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
-  EXPECT_EQ(ldlt.info(), Eigen::Success);
-  return ldlt.solve(sys.rhs);
-}
 
 }  // namespace
 

@@ -3,7 +3,6 @@
 // must not see the open gas at all; the gas must stay above the water, every particle accounted for).
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseCholesky>
 #include <cmath>
 
 #include "case/case_file.hpp"
@@ -13,9 +12,11 @@
 #include "mps/phase_coupling.hpp"
 #include "mps/pressure_acceleration.hpp"
 #include "mps/pressure_poisson.hpp"
+#include "support/exact_solve.hpp"
 #include "mps/solver.hpp"
 
 using namespace mistfall;
+using test_support::solveExactly;
 
 namespace {
 
@@ -117,12 +118,6 @@ struct BubbleSystem {
   }
 };
 
-Eigen::VectorXd solveExactly(const PressureSystem& sys) {
-  const Eigen::SparseMatrix<double> a = sys.matrix;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
-  EXPECT_EQ(ldlt.info(), Eigen::Success);
-  return ldlt.solve(sys.rhs);
-}
 
 }  // namespace
 
