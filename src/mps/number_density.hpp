@@ -8,16 +8,6 @@
 
 namespace mistfall {
 
-template <int D>
-double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re) {
-  double n = 0.0;
-  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-    const auto j = nl.indices[s];
-    n += weight((position[j] - position[i]).norm(), re);
-  }
-  return n;
-}
-
 // Number density counting only the neighbours `include(j)` admits (one phase's view in the two-phase model).
 template <int D, class Include>
 double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
@@ -30,15 +20,10 @@ double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const
   return n;
 }
 
-// Number density of every active particle (escaped particles get 0).
+// Number density counting every neighbour in the list (the list never holds escaped particles).
 template <int D>
-void computeNumberDensity(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                          const NeighborList& nl, double re, std::vector<double>& n) {
-  const std::int64_t count = static_cast<std::int64_t>(position.size());
-  n.resize(count);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < count; ++i)
-    n[i] = isActive(kind[i]) ? numberDensityAt<D>(i, position, nl, re) : 0.0;
+double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re) {
+  return numberDensityAt<D>(i, position, nl, re, [](std::int32_t) { return true; });
 }
 
 }  // namespace mistfall
