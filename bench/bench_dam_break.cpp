@@ -72,5 +72,3 @@ void sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_CAPTURE(damBreak, iccg, "iccg")->Apply(sizes);
 BENCHMARK_CAPTURE(damBreak, amg, "amg")->Apply(sizes);
-
-BENCHMARK_MAIN();
