@@ -538,6 +538,23 @@ TEST(SimulateDivergence, StopsWithCodeThreeAndKeepsTheFrames) {
   // It diverged between the last frame and the next output time.
   const auto ckpt = readCheckpoint<2>(run / "checkpoint.bin");
   EXPECT_LT(ckpt.time, 0.2);
+  // diverged.txt records the time (after the last frame), the step and the reason.
+  std::ifstream record(run / "diverged.txt");
+  ASSERT_TRUE(record) << "no diverged.txt";
+  std::string time_key, eq, step_key, eq2;
+  double time = 0.0;
+  long step = 0;
+  record >> time_key >> eq >> time >> step_key >> eq2 >> step;
+  EXPECT_EQ("time", time_key);
+  EXPECT_GT(time, ckpt.time);
+  EXPECT_EQ("step", step_key);
+  EXPECT_GT(step, ckpt.step);
+  // Overwriting the run removes the stale record with the rest of the old run.
+  auto again = options(case_file, run);
+  again.overwrite = true;
+  again.until = ckpt.time / 2.0;
+  EXPECT_EQ(0, simulate(again).code);
+  EXPECT_FALSE(fs::exists(run / "diverged.txt"));
 }
 
 TEST(CliDivergence, ReportsTimeAndStepOnStderr) {

@@ -30,6 +30,7 @@ constexpr const char* kCheckpoint = "checkpoint.bin";
 constexpr const char* kDiagnostics = "diagnostics.csv";
 constexpr const char* kCollection = "frames.pvd";
 constexpr const char* kBubbles = "bubbles.csv";
+constexpr const char* kDiverged = "diverged.txt";  // written when the run diverges
 
 std::string frameName(int frame) {
   char buf[64];
@@ -116,6 +117,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
 
   ProgressReporter progress(end_time, state.time, std::cerr, options.force_plain_progress);
   const double eps = 1e-9 * interval;
+  std::filesystem::remove(dir / kDiverged);  // a resumed run tries again
   try {
     while (state.time < end_time - eps) {
       const double next_output = std::min(end_time, state.next_frame * interval);
@@ -127,6 +129,11 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     }
   } catch (const DivergenceError& e) {
     progress.finish();
+    // A record of the divergence next to the frames, for the tools (tools/plot_bubble.py) and later stages.
+    writeFileAtomically(dir / kDiverged, [&](std::ostream& out) {
+      out << std::setprecision(17) << "time = " << e.time() << "\nstep = " << e.step() << "\nreason = " << e.what()
+          << "\n";
+    });
     std::cerr << "mistfall: the run diverged at t = " << e.time() << " s, step " << e.step() << ": " << e.what()
               << "\nmistfall: frames up to t = " << (state.next_frame - 1) * interval << " s are kept in " << dir
               << "\n";
@@ -172,7 +179,7 @@ int runSimulate(const SimulateOptions& options) {
     // A run directory that cannot be created (a path through a file, no permission) is bad input too.
     try {
       if (options.overwrite) {
-        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy, kBubbles})
+        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy, kBubbles, kDiverged})
           fs::remove(options.out_dir / f);
         fs::remove_all(options.out_dir / "frames");
       }
