@@ -73,6 +73,7 @@ struct NumericsConfig {
   double solver_tolerance = 1.0e-8;     // relative residual |b - Ax| / |b|
   int solver_max_iterations = 1000;
   double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
+  int bubble_min_particles = 6;         // smaller gas regions inside the liquid move as liquid (docs/two-phase.md)
 };
 
 struct OutputConfig {

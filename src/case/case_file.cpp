@@ -135,7 +135,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.checkKeys(nm, np,
                {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
-                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction"});
+                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   rd.number(nm, np, "radius_number_density", {1.5, 5.0, false, false}, n.radius_number_density);
@@ -154,6 +154,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "solver_tolerance", {0.0, 1e-2, true, false}, n.solver_tolerance);
   rd.integer(nm, np, "solver_max_iterations", 1, 100000, "[1, 100000]", n.solver_max_iterations);
   rd.number(nm, np, "max_escaped_fraction", {0.0, 1.0, true, false}, n.max_escaped_fraction);
+  rd.integer(nm, np, "bubble_min_particles", 1, 1000000, "[1, 1000000]", n.bubble_min_particles);
   for (int k = 0; k < dim; ++k) {
     const double cells = (c.domain.max[k] - c.domain.min[k]) / n.particle_spacing;
     if (!(cells <= static_cast<double>(kMaxLatticeIndex)))

@@ -53,7 +53,8 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0) {
 }
 
 template <int D>
-void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out) {
+void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
+                    const std::vector<char>* was_enclosed) {
   const std::size_t n = p.size();
   if (nl.particleCount() != n)
     throw std::invalid_argument("gas regions: neighbour list holds " + std::to_string(nl.particleCount()) +
@@ -76,7 +77,8 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
       ++neighbours;
       if (!gas(j) && !(p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid)) foreign = true;
     }
-    open[i] = foreign || neighbours < min_neighbours;
+    const bool exempt = was_enclosed && static_cast<std::size_t>(i) < was_enclosed->size() && (*was_enclosed)[i];
+    open[i] = foreign || (neighbours < min_neighbours && !exempt);
   }
 
   // Components, serially in index order (deterministic whatever the thread count).
@@ -146,8 +148,10 @@ std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegion
   return stats;
 }
 
-template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&);
-template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&);
+template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&,
+                                   const std::vector<char>*);
+template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&,
+                                   const std::vector<char>*);
 template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
 template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);
 

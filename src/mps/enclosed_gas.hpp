@@ -11,7 +11,9 @@
 //      - i has at least kEnclosedMinNeighbourFraction * full_count active neighbours (any kind) within R, where
 //        full_count = #{ lattice points k in Z^D : 0 < |k| l0 < R } is the count of an interior lattice
 //        particle (12 in 2D and 32 in 3D for R = 2.1 l0). A deficit means open space next to the gas, e.g.
-//        the open top of the domain.
+//        the open top of the domain. A particle that was enclosed at the previous step (`was_enclosed`, when
+//        given) is exempt from this count: inside a moving bubble the gas opens small gaps next to the liquid,
+//        which do not make the bubble open.
 //    A lone gas particle surrounded by liquid is a bubble of one particle.
 //  * delta_gl (enclosed_particle) is 1 for the gas particles of enclosed regions, 0 otherwise.
 //  * Bubble statistics (enclosed regions only, by region id): particle count N, mean pressure, centroid
@@ -57,7 +59,8 @@ inline bool isGas(ParticleKind k, Phase ph) { return k == ParticleKind::Fluid &&
 int latticeNeighbourCount(int dimension, double link_radius, double l0);
 
 template <int D>
-void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out);
+void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
+                    const std::vector<char>* was_enclosed = nullptr);
 
 template <int D>
 std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegions& r, double l0);

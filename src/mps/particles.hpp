@@ -43,6 +43,11 @@ struct Particles {
     for (auto v : kind) c += (v == k);
     return c;
   }
+  std::size_t count(ParticleKind k, Phase ph) const {
+    std::size_t c = 0;
+    for (std::size_t i = 0; i < kind.size(); ++i) c += (kind[i] == k && phase[i] == ph);
+    return c;
+  }
 };
 
 inline bool isFixed(ParticleKind k) { return k == ParticleKind::Wall || k == ParticleKind::Dummy; }

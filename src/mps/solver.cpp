@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "mps/bubble_gas_motion.hpp"
+#include "mps/bubble_pressure.hpp"
 #include "mps/collision.hpp"
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
@@ -71,15 +73,16 @@ const StepReport& MpsSolver<D>::step(double until) {
   predict(dt);
   collide(dt);
   buildNeighbours();
-  // The liquid system, eqs. (5), (7): liquid, walls and enclosed gas.
+  // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
   computeLiquidNumberDensity();
   double tp = omp_get_wtime();
   solveLiquidPressure(dt);
   extrapolateDummyPressure(state_.particles.pressure, phases_[static_cast<int>(Phase::Liquid)].density);
   report_.seconds_pressure = omp_get_wtime() - tp;
   correctLiquid(dt);
-  // The gas system, eqs. (6), (8): open gas, the moved liquid as its walls.
-  if (roles_.open_gas_count > 0) {
+  if (roles_.enclosed_count > 0) moveBubbleGas(dt);
+  // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
+  if (roles_.gas_count > 0) {
     buildNeighbours();
     tp = omp_get_wtime();
     solveGasPressure(dt);
@@ -101,12 +104,24 @@ const StepReport& MpsSolver<D>::step(double until) {
 template <int D>
 void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
-    findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions_);
+    const auto was_enclosed = regions_.enclosed_particle;
+    findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions_,
+                      &was_enclosed);
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
   } else {
     regions_ = GasRegions{};
   }
-  assignCouplingRoles<D>(state_.particles, regions_, roles_);
+  assignCouplingRoles<D>(state_.particles, regions_, roles_,
+                         static_cast<std::size_t>(config_.numerics.bubble_min_particles));
+  // Each bubble's pressure for the liquid system: the mean of its particles' gas-system pressures so far.
+  const auto& p = state_.particles;
+  bubble_pressure_.assign(p.size(), 0.0);
+  std::vector<double> sum(regions_.regionCount(), 0.0);
+  std::vector<std::size_t> count(regions_.regionCount(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (roles_.enclosed_gas[i]) sum[regions_.region_of[i]] += p.pressure[i], ++count[regions_.region_of[i]];
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (roles_.enclosed_gas[i]) bubble_pressure_[i] = sum[regions_.region_of[i]] / count[regions_.region_of[i]];
 }
 
 template <int D>
@@ -114,7 +129,8 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   if (!phase_present_[static_cast<int>(Phase::Gas)]) return {};
   buildNeighbours();
   GasRegions regions;
-  findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions);
+  findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
+                    &regions_.enclosed_particle);
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 
@@ -206,7 +222,13 @@ void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* whi
   const auto rows = system_.particle_of.size();
   pressure_unknowns_.resize(rows);
   for (std::size_t r = 0; r < rows; ++r) pressure_unknowns_[r] = guess[system_.particle_of[r]];
-  const auto result = linear_solver_->solve(system_.matrix, system_.rhs, pressure_unknowns_);
+  solveLinear(system_.matrix, system_.rhs, pressure_unknowns_, which, iterations);
+}
+
+template <int D>
+void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
+                               Eigen::VectorXd& x, const char* which, int& iterations) {
+  const auto result = linear_solver_->solve(a, b, x);
   iterations = result.iterations;
   if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
     std::ostringstream msg;
@@ -218,9 +240,8 @@ void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* whi
   report_.ppe_residual = std::max(report_.ppe_residual, result.relative_residual);
 }
 
-// The liquid system: eq. (9) for liquid and walls, eq. (17) for the enclosed gas, coupled by the
-// variable-density Laplacian (pressure_poisson.hpp). Unknowns: liquid, wall and enclosed gas particles off the
-// free surface.
+// The liquid system: eq. (9) for liquid and walls (one density), with one unknown per bubble (bubble_pressure.hpp):
+// enclosed gas holds its bubble's pressure P_B and pushes on the liquid with it (the force of eq. (7)).
 template <int D>
 void MpsSolver<D>::solveLiquidPressure(double dt) {
   auto& p = state_.particles;
@@ -234,25 +255,45 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   problem_.density.assign(n, liquid.density);
   problem_.sound_speed.assign(n, liquid.sound_speed);
   problem_.reference_density = liquid.density;
+  std::vector<std::int32_t> group_of(n, -1);
+  std::vector<double> group_shift(regions_.regionCount(), 0.0);
+  std::vector<double> group_guess(regions_.regionCount(), 0.0);
+  const double bubble_shift = std::isfinite(gas.sound_speed)
+                                  ? liquid.density / (gas.density * dt * dt * gas.sound_speed * gas.sound_speed)
+                                  : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto k = p.kind[i];
     problem_.takes_part[i] = roles_.in_liquid_system[i] && (k == ParticleKind::Fluid || k == ParticleKind::Wall);
-    problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
-    if (isGas(k, p.phase[i])) {
-      problem_.density[i] = gas.density;
-      problem_.sound_speed[i] = gas.sound_speed;
+    if (roles_.enclosed_gas[i]) {
+      problem_.unknown[i] = 1;
+      problem_.sound_speed[i] = std::numeric_limits<double>::infinity();
+      group_of[i] = regions_.region_of[i];
+      group_shift[group_of[i]] += bubble_shift;
+      group_guess[group_of[i]] = bubble_pressure_[i];
+    } else {
+      problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
     }
   }
   density_ = problem_.density;
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
-  solveSystem(p.pressure, "liquid", report_.ppe_iterations);
-  report_.ppe_unknowns = system_.particle_of.size();
-  // Negative pressures are set to zero (standard MPS: the liquid does not sustain tension).
+  lumpPressureGroups(system_, group_of, group_shift, lumped_);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(lumped_.matrix.rows());
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    x[lumped_.column_of_row[r]] = group_of[i] >= 0 ? group_guess[group_of[i]] : p.pressure[i];
+  }
+  solveLinear(lumped_.matrix, lumped_.rhs, x, "liquid", report_.ppe_iterations);
+  report_.ppe_unknowns = lumped_.matrix.rows();
+  // Negative liquid pressures are set to zero (standard MPS: the liquid does not sustain tension); a bubble keeps
+  // its pressure (below zero it is larger than at rest and pulls the liquid in).
   for (std::size_t i = 0; i < n; ++i)
     if (roles_.in_liquid_system[i]) p.pressure[i] = 0.0;
-  for (std::size_t r = 0; r < system_.particle_of.size(); ++r)
-    p.pressure[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    const double value = x[lumped_.column_of_row[r]];
+    p.pressure[i] = group_of[i] >= 0 ? value : std::max(0.0, value);
+  }
 }
 
 // Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
@@ -279,8 +320,8 @@ void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, doubl
   }
 }
 
-// Correction of the liquid and the enclosed gas: u' = -dt (1/rho) grad p (pressure_acceleration.hpp),
-// u = u* + u', r = r* + dt u'.
+// Correction of the liquid: u' = -dt (1/rho) grad p (pressure_acceleration.hpp), u = u* + u', r = r* + dt u'.
+// Enclosed gas pushes with its bubble's pressure but is moved by the gas system.
 template <int D>
 void MpsSolver<D>::correctLiquid(double dt) {
   auto& p = state_.particles;
@@ -293,20 +334,22 @@ void MpsSolver<D>::correctLiquid(double dt) {
   auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid || !in_system[i]) continue;
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
     change[i] = dt * pressureAccelerationAt<D>(i, p.position, p.pressure, density_, neighbours_, constants_,
                                                carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid || !in_system[i]) continue;
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
     p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }
 }
 
-// The gas system, eq. (17) with the gas's sound speed: open gas particles, and as its walls every wall, liquid or
-// enclosed gas particle within re of open gas (at the liquid's corrected positions). n* counts every particle.
+// The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
+// particle within re of gas (at the liquid's corrected positions). n* counts every particle. Gas pressures are
+// kept as solved: a bubble below its rest volume's pressure pulls the liquid in (open gas next to the liquid's
+// free surface is clamped at 0 like a free surface).
 template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
@@ -317,7 +360,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)
-    if (roles_.open_gas[i] || roles_.gas_side_wall[i])
+    if (roles_.inGasSystem(i) || roles_.gas_side_wall[i])
       gas_number_density_[i] = numberDensityAt<D>(i, p.position, neighbours_, re, active);
   const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
   const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
@@ -328,9 +371,14 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.sound_speed.assign(n, gas.sound_speed);
   problem_.reference_density = gas.density;
   for (std::int64_t i = 0; i < n; ++i) {
-    problem_.takes_part[i] = roles_.open_gas[i] || roles_.gas_side_wall[i];
+    problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
     problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0;
     problem_.carries_velocity[i] = isActive(p.kind[i]);
+    // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
+    // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
+    // P_B), so a (nearly) incompressible gas gets a regularising sound speed of 10 l0 / dt on the bubble's rows
+    // (a shift of about 1e-3 of the diagonal, which leaves the solve well conditioned).
+    if (roles_.enclosed_gas[i]) problem_.sound_speed[i] = std::min(gas.sound_speed, 10.0 * constants_.l0 / dt);
   }
   gas_density_ = problem_.density;
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
@@ -339,7 +387,10 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   report_.gas_ppe_unknowns = system_.particle_of.size();
   gas_pressure_.assign(n, 0.0);
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r)
-    gas_pressure_[system_.particle_of[r]] = std::max(0.0, pressure_unknowns_[r]);
+  {
+    const auto i = system_.particle_of[r];
+    gas_pressure_[i] = roles_.enclosed_gas[i] ? pressure_unknowns_[r] : std::max(0.0, pressure_unknowns_[r]);
+  }
   extrapolateDummyPressure(gas_pressure_, gas.density);
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.open_gas[i]) continue;
@@ -348,26 +399,32 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   }
 }
 
-// Correction of the open gas with the gas system's pressures (the liquid is not moved by it).
+// Correction of the gas with the gas system's pressures (the liquid is not moved by it).
 template <int D>
 void MpsSolver<D>::correctGas(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
-  auto solvedPressure = [&](std::int32_t j) { return roles_.open_gas[j] || roles_.gas_side_wall[j]; };
+  auto solvedPressure = [&](std::int32_t j) { return roles_.inGasSystem(j) || roles_.gas_side_wall[j]; };
   auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (!roles_.open_gas[i]) continue;
+    if (!roles_.inGasSystem(i)) continue;
     change[i] = dt * pressureAccelerationAt<D>(i, p.position, gas_pressure_, gas_density_, neighbours_, constants_,
                                                carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (!roles_.open_gas[i]) continue;
-    p.velocity[i] += change[i];
+    if (!roles_.inGasSystem(i)) continue;
+    if (!roles_.enclosed_gas[i]) p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }
+}
+
+// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp).
+template <int D>
+void MpsSolver<D>::moveBubbleGas(double dt) {
+  extendVelocityIntoBubbles<D>(state_.particles, neighbours_, roles_, constants_.re_number_density, dt);
 }
 
 template <int D>

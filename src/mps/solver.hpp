@@ -2,10 +2,11 @@
 // coupling of eqs. (5)-(8) (docs/two-phase.md):
 //   buildNeighbours -> findBubbles (delta_gl) -> chooseTimeStep -> predict (viscosity + gravity, explicit)
 //   -> collide -> buildNeighbours at r*
-//   -> liquid system: numberDensity n* -> solveLiquidPressure (eq. (9), (17) for enclosed gas)
-//      -> extrapolateDummyPressure -> correctLiquid (-dt/rho grad p)
-//   -> gas system (when open gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
-//      -> correctGas
+//   -> liquid system: numberDensity n* -> solveLiquidPressure (eq. (9), one unknown per bubble with eq. (17)'s
+//      shift) -> extrapolateDummyPressure -> correctLiquid (-dt/rho grad p)
+//   -> moveBubbleGas (the bubbles' gas takes the liquid's velocity, extended into the bubble)
+//   -> gas system (when gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
+//      -> correctGas (open gas: velocity and position; bubble gas: position only)
 //   -> markEscaped -> checkHealth
 #pragma once
 
@@ -15,6 +16,7 @@
 #include <string>
 
 #include "case/case_config.hpp"
+#include "mps/bubble_pressure.hpp"
 #include "mps/enclosed_gas.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/phase_coupling.hpp"
@@ -78,8 +80,11 @@ class MpsSolver {
   void correctLiquid(double dt);
   void solveGasPressure(double dt);
   void correctGas(double dt);
+  void moveBubbleGas(double dt);
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
   void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
+  void solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   const char* which, int& iterations);
   void markEscaped();
   void checkHealth(double dt) const;
 
@@ -99,8 +104,10 @@ class MpsSolver {
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
   std::vector<double> density_;             // rho_i of the liquid system
+  std::vector<double> bubble_pressure_;     // per enclosed gas particle: its bubble's mean gas pressure
   std::vector<double> gas_density_;         // rho_g for every particle (the gas system is one-density)
   PressureSystem system_;
+  LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;
   std::unique_ptr<LinearSolver> linear_solver_;
   StepReport report_;

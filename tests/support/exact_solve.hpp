@@ -10,11 +10,14 @@
 
 namespace mistfall::test_support {
 
-inline Eigen::VectorXd solveExactly(const PressureSystem& sys) {
-  const Eigen::SparseMatrix<double> a = sys.matrix;
+inline Eigen::VectorXd solveExactly(const Eigen::SparseMatrix<double, Eigen::RowMajor>& matrix,
+                                    const Eigen::VectorXd& rhs) {
+  const Eigen::SparseMatrix<double> a = matrix;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
   EXPECT_EQ(ldlt.info(), Eigen::Success);
-  return ldlt.solve(sys.rhs);
+  return ldlt.solve(rhs);
 }
+
+inline Eigen::VectorXd solveExactly(const PressureSystem& sys) { return solveExactly(sys.matrix, sys.rhs); }
 
 }  // namespace mistfall::test_support
