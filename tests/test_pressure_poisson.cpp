@@ -29,11 +29,11 @@ struct TankSystem {
     surface = freeSurfaceFlags(state.particles, config.numerics.surface_threshold, solver->constants().n0);
   }
   PressureSystem assemble(double sound_speed, double dt) const {
-    std::array<PhaseProperties, 2> phases{config.physics.liquid, config.physics.liquid};
-    phases[0].sound_speed = phases[1].sound_speed = sound_speed;
+    PhaseProperties liquid = config.physics.liquid;
+    liquid.sound_speed = sound_speed;
     PressureSystem sys;
     assemblePressureSystem<2>(state.particles, state.particles.number_density, solver->neighbours(),
-                              solver->constants(), singlePhaseProblem(state.particles, phases, surface),
+                              solver->constants(), singlePhaseProblem(state.particles, liquid, surface),
                               PressureSourceTerm{PressureSource::Standard, 1.0}, dt, sys);
     return sys;
   }

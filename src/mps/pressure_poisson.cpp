@@ -9,25 +9,21 @@
 namespace mistfall {
 
 template <int D>
-PressureProblem singlePhaseProblem(const Particles<D>& p, const std::array<PhaseProperties, 2>& phases,
+PressureProblem singlePhaseProblem(const Particles<D>& p, const PhaseProperties& liquid,
                                    const std::vector<char>& surface) {
   const std::size_t n = p.size();
   PressureProblem problem;
   problem.takes_part.resize(n);
   problem.unknown.resize(n);
   problem.carries_velocity.resize(n);
-  problem.density.resize(n);
-  problem.sound_speed.resize(n);
+  problem.sound_speed.assign(n, liquid.sound_speed);
+  problem.density = liquid.density;
   for (std::size_t i = 0; i < n; ++i) {
     const auto k = p.kind[i];
     problem.takes_part[i] = k == ParticleKind::Fluid || k == ParticleKind::Wall;
     problem.unknown[i] = problem.takes_part[i] && !surface[i];
     problem.carries_velocity[i] = isActive(k);
-    const PhaseProperties& phase = phases[static_cast<int>(p.phase[i])];
-    problem.density[i] = phase.density;
-    problem.sound_speed[i] = phase.sound_speed;
   }
-  problem.reference_density = phases[static_cast<int>(Phase::Liquid)].density;
   return problem;
 }
 
@@ -37,8 +33,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
                             PressureSourceTerm source, double dt, PressureSystem& sys) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto& takes_part = problem.takes_part;
-  const auto& rho = problem.density;
-  const double rho_ref = problem.reference_density;
+  const double rho = problem.density;
 
   sys.row_of.assign(n, -1);
   sys.particle_of.clear();
@@ -84,16 +79,15 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
       if (!takes_part[j]) continue;
       const double w = weight((p.position[j] - p.position[i]).norm(), re);
       if (w <= 0.0) continue;
-      const double k = factor * (rho[i] == rho[j] ? rho_ref / rho[i] : 2.0 * rho_ref / (rho[i] + rho[j]));
-      diagonal += k * w;
+      diagonal += factor * w;
       if (sys.row_of[j] >= 0) {
         inner[at] = sys.row_of[j];
-        value[at] = -k * w;
+        value[at] = -factor * w;
         ++at;
       }
     }
     const double ci = problem.sound_speed[i];
-    if (std::isfinite(ci)) diagonal += rho_ref / rho[i] / (dt * dt * ci * ci);
+    if (std::isfinite(ci)) diagonal += 1.0 / (dt * dt * ci * ci);
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
     // Neighbour lists are sorted by cell, not by index: sort the row's columns (Eigen requires it).
@@ -107,18 +101,18 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     }
     const double compression = (number_density[i] - c.n0) / c.n0;
     if (source.kind == PressureSource::Standard) {
-      sys.rhs[r] = rho_ref / (dt * dt) * compression;
+      sys.rhs[r] = rho / (dt * dt) * compression;
     } else {
       auto carriesVelocity = [&](std::int32_t j) { return problem.carries_velocity[j] != 0; };
       const double divergence = divergenceAt<D>(i, p.position, p.velocity, nl, c, carriesVelocity);
-      sys.rhs[r] = -rho_ref / dt * divergence + source.relaxation * rho_ref / (dt * dt) * compression;
+      sys.rhs[r] = -rho / dt * divergence + source.relaxation * rho / (dt * dt) * compression;
     }
   }
 }
 
-template PressureProblem singlePhaseProblem<2>(const Particles<2>&, const std::array<PhaseProperties, 2>&,
+template PressureProblem singlePhaseProblem<2>(const Particles<2>&, const PhaseProperties&,
                                                const std::vector<char>&);
-template PressureProblem singlePhaseProblem<3>(const Particles<3>&, const std::array<PhaseProperties, 2>&,
+template PressureProblem singlePhaseProblem<3>(const Particles<3>&, const PhaseProperties&,
                                                const std::vector<char>&);
 template void assemblePressureSystem<2>(const Particles<2>&, const std::vector<double>&, const NeighborList&,
                                         const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,

@@ -1,21 +1,17 @@
 // Pressure Poisson equation of MPS, eq. (9), with the compressible extension of eq. (12)/(17):
 //   (A - E / (dt^2 c^2)) p = -rho / dt^2 * (n* - n0) / n0
 // A is the Laplacian matrix of eq. (16) (eq. (13) applied to p). We assemble the negated system, which is
-// symmetric positive definite. Where two densities meet (liquid and gas enclosed in it, docs/two-phase.md) the
-// Laplacian is the variable-density one, div((1/rho) grad p), with the pair density (rho_i + rho_j) / 2; the
-// system is scaled by a reference density rho_ref so that a one-density system is eq. (9)/(17) unchanged.
-// For each unknown particle i:
-//   2D0/(n0 lambda) * sum_j k_ij w_ij (p_i - p_j) + rho_ref / rho_i * p_i / (dt^2 c_i^2)
-//       = rho_ref / dt^2 * (n*_i - n0) / n0,          k_ij = 2 rho_ref / (rho_i + rho_j)
+// symmetric positive definite. One system holds one density rho (the liquid's or the gas's, docs/two-phase.md);
+// the sound speed c_i is per row (eq. (17) may apply to some rows only). For each unknown particle i:
+//   2D0/(n0 lambda) * sum_j w_ij (p_i - p_j) + p_i / (dt^2 c_i^2) = rho / dt^2 * (n*_i - n0) / n0
 // Boundary particles (taking part but not unknown: the free surface, n*_i < beta n0) hold p = 0 (Dirichlet):
 // they add to the diagonal only. Particles that do not take part (dummies) are left out.
 // c = infinity gives the incompressible equation (9) exactly.
 // With the mixed source (Tanaka & Masunaga 2010) the right-hand side becomes
-//   rho_ref * (-1 / dt * <div u*>_i + gamma / dt^2 * (n*_i - n0) / n0)      (divergence by divergence.hpp)
+//   rho * (-1 / dt * <div u*>_i + gamma / dt^2 * (n*_i - n0) / n0)      (divergence by divergence.hpp)
 #pragma once
 
 #include <Eigen/Sparse>
-#include <array>
 #include <vector>
 
 #include "case/case_config.hpp"
@@ -36,9 +32,8 @@ struct PressureProblem {
   std::vector<char> takes_part;     // in the Laplacian: an unknown or a Dirichlet (p = 0) boundary
   std::vector<char> unknown;        // carries an unknown (implies takes_part)
   std::vector<char> carries_velocity;  // neighbours of the divergence (mixed source only)
-  std::vector<double> density;      // rho_i [kg/m^3]
   std::vector<double> sound_speed;  // c_i [m/s], infinity = incompressible
-  double reference_density = 1.0;   // rho_ref: scales the whole system
+  double density = 1.0;             // rho [kg/m^3] of the system's fluid
 };
 
 // Free-surface flags of the single-phase system: fluid or wall particles with n*_i < beta n0.
@@ -51,10 +46,10 @@ std::vector<char> freeSurfaceFlags(const Particles<D>& p, double beta, double n0
   return surface;
 }
 
-// The single-phase problem: fluid and wall particles take part, those off the free surface are unknowns,
-// density and sound speed by phase, rho_ref = the liquid's density.
+// The single-phase problem: fluid and wall particles take part, those off the free surface are unknowns, with
+// the liquid's density and sound speed.
 template <int D>
-PressureProblem singlePhaseProblem(const Particles<D>& p, const std::array<PhaseProperties, 2>& phases,
+PressureProblem singlePhaseProblem(const Particles<D>& p, const PhaseProperties& liquid,
                                    const std::vector<char>& surface);
 
 struct PressureSourceTerm {

@@ -13,7 +13,6 @@
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
-#include "mps/pressure_acceleration.hpp"
 #include "mps/time_step.hpp"
 
 namespace mistfall {
@@ -252,9 +251,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);
   problem_.carries_velocity = roles_.in_liquid_system;
-  problem_.density.assign(n, liquid.density);
+  problem_.density = liquid.density;
   problem_.sound_speed.assign(n, liquid.sound_speed);
-  problem_.reference_density = liquid.density;
   std::vector<std::int32_t> group_of(n, -1);
   std::vector<double> group_shift(regions_.regionCount(), 0.0);
   std::vector<double> group_guess(regions_.regionCount(), 0.0);
@@ -274,7 +272,6 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
       problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
     }
   }
-  density_ = problem_.density;
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
@@ -320,12 +317,13 @@ void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, doubl
   }
 }
 
-// Correction of the liquid: u' = -dt (1/rho) grad p (pressure_acceleration.hpp), u = u* + u', r = r* + dt u'.
+// Correction of the liquid: u' = -dt (1/rho_l) <grad p> (gradient.hpp, minimum-pressure form), u = u* + u', r = r* + dt u'.
 // Enclosed gas pushes with its bubble's pressure but is moved by the gas system.
 template <int D>
 void MpsSolver<D>::correctLiquid(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   const auto& in_system = roles_.in_liquid_system;
   auto solvedPressure = [&](std::int32_t j) {
@@ -335,8 +333,8 @@ void MpsSolver<D>::correctLiquid(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
-    change[i] = dt * pressureAccelerationAt<D>(i, p.position, p.pressure, density_, neighbours_, constants_,
-                                               carriesPressure, solvedPressure);
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_,
+                                          GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -367,9 +365,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);
   problem_.carries_velocity.assign(n, 0);
-  problem_.density.assign(n, gas.density);
+  problem_.density = gas.density;
   problem_.sound_speed.assign(n, gas.sound_speed);
-  problem_.reference_density = gas.density;
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
     problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0;
@@ -380,7 +377,6 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     // (a shift of about 1e-3 of the diagonal, which leaves the solve well conditioned).
     if (roles_.enclosed_gas[i]) problem_.sound_speed[i] = std::min(gas.sound_speed, 10.0 * constants_.l0 / dt);
   }
-  gas_density_ = problem_.density;
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_);
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
@@ -404,14 +400,15 @@ template <int D>
 void MpsSolver<D>::correctGas(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Gas)].density;
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   auto solvedPressure = [&](std::int32_t j) { return roles_.inGasSystem(j) || roles_.gas_side_wall[j]; };
   auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
-    change[i] = dt * pressureAccelerationAt<D>(i, p.position, gas_pressure_, gas_density_, neighbours_, constants_,
-                                               carriesPressure, solvedPressure);
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, neighbours_, constants_,
+                                          GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {

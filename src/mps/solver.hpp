@@ -103,9 +103,7 @@ class MpsSolver {
   PressureProblem problem_;
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
-  std::vector<double> density_;             // rho_i of the liquid system
   std::vector<double> bubble_pressure_;     // per enclosed gas particle: its bubble's mean gas pressure
-  std::vector<double> gas_density_;         // rho_g for every particle (the gas system is one-density)
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;
