@@ -44,6 +44,7 @@ Particles<D> sampleParticles(std::size_t n) {
     p.add(x, u, kinds[i % 4], (i % 3 == 0) ? Phase::Gas : Phase::Liquid);
     p.pressure.back() = 1000.0 / 3.0 * static_cast<double>(i) - 5.0;
     p.number_density.back() = 6.0 + std::cos(static_cast<double>(i)) / 11.0;
+    p.enclosed.back() = (i % 6 == 0);  // some gas particles in a bubble
   }
   return p;
 }

@@ -4,20 +4,25 @@
 // rising bubble.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
 #include "mps/gradient.hpp"
 #include "mps/number_density.hpp"
 #include "mps/phase_coupling.hpp"
+#include "io/checkpoint.hpp"
 #include "mps/bubble_pressure.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "support/exact_solve.hpp"
+#include "support/same_particles.hpp"
 #include "mps/solver.hpp"
 
 using namespace mistfall;
 using test_support::solveExactly;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -124,6 +129,59 @@ struct BubbleSystem {
     return lumped;
   }
 };
+
+// A coarse cases/bubble_rise.toml: l0 = 5 mm (62 gas particles in the bubble, 9 across), compressible gas
+// (c = 340 m/s), mixed source.
+std::string coarseBubbleCase() {
+  return R"(
+[case]
+name = "coarse_bubble"
+dimension = 2
+[domain]
+min = [-0.02, -0.02]
+max = [0.22, 0.25]
+[physics.gas]
+sound_speed = 340.0
+[numerics]
+particle_spacing = 0.005
+dt_max = 5e-4
+pressure_source = "mixed"
+source_relaxation = 0.01
+[output]
+end_time = 0.15
+[[region]]
+name = "air"
+material = "gas"
+min = [0.0, 0.0]
+max = [0.2, 0.2]
+[[region]]
+name = "water"
+material = "water"
+min = [0.0, 0.0]
+max = [0.2, 0.15]
+[[region]]
+name = "bubble"
+material = "gas"
+shape = "circle"
+center = [0.1, 0.0925]
+radius = 0.0225
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.22, 0.0]
+[[region]]
+name = "left"
+material = "wall"
+min = [-0.02, 0.0]
+max = [0.0, 0.2]
+[[region]]
+name = "right"
+material = "wall"
+min = [0.2, 0.0]
+max = [0.22, 0.2]
+)";
+}
 
 }  // namespace
 
@@ -247,59 +305,10 @@ TEST(TwoPhaseTank, LiquidIgnoresOpenAirAndAirStaysAbove) {
   EXPECT_LT(max_gas_speed, 0.1) << "still air over still water";
 }
 
-// A coarse cases/bubble_rise.toml (l0 = 5 mm: 62 gas particles in the bubble, 9 across), compressible gas
-// (c = 340 m/s), mixed source, for 0.15 s: the bubble stays one body with bounded pressure and rises, the water
+// The coarse bubble for 0.15 s: the bubble stays one body with bounded pressure and rises, the water
 // surface far from it stays flat, and no particle of either phase is lost.
 TEST(TwoPhaseBubble, CoarseBubbleRisesAsOneBodyWithBoundedPressure) {
-  std::string text = R"(
-[case]
-name = "coarse_bubble"
-dimension = 2
-[domain]
-min = [-0.02, -0.02]
-max = [0.22, 0.25]
-[physics.gas]
-sound_speed = 340.0
-[numerics]
-particle_spacing = 0.005
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-[output]
-end_time = 0.15
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, 0.0]
-max = [0.2, 0.2]
-[[region]]
-name = "water"
-material = "water"
-min = [0.0, 0.0]
-max = [0.2, 0.15]
-[[region]]
-name = "bubble"
-material = "gas"
-shape = "circle"
-center = [0.1, 0.0925]
-radius = 0.0225
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.22, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, 0.0]
-max = [0.0, 0.2]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.2, 0.0]
-max = [0.22, 0.2]
-)";
-  TankRun s(text);
+  TankRun s(coarseBubbleCase());
   auto& p = s.state.particles;
   const std::size_t liquid = p.count(ParticleKind::Fluid, Phase::Liquid), gas = p.count(ParticleKind::Fluid, Phase::Gas);
   const auto start = s.solver->currentBubbles();
@@ -336,4 +345,24 @@ max = [0.22, 0.2]
   EXPECT_EQ(liquid, p.count(ParticleKind::Fluid, Phase::Liquid));
   EXPECT_EQ(gas, p.count(ParticleKind::Fluid, Phase::Gas));
   EXPECT_EQ(0u, p.count(ParticleKind::Escaped));
+}
+
+// A run stopped and resumed from its checkpoint continues bit for bit: the bubble flags (delta_gl) that keep a
+// bubble enclosed through small gaps travel in the checkpoint with the particles.
+TEST(TwoPhaseBubble, ResumeFromCheckpointIsBitIdentical) {
+  TankRun whole(coarseBubbleCase());  // stops at 0.03 too (an output time), so both take the same steps
+  while (whole.state.time < 0.03 - 1e-12) whole.solver->step(0.03);
+  while (whole.state.time < 0.06 - 1e-12) whole.solver->step(0.06);
+  TankRun first(coarseBubbleCase());
+  while (first.state.time < 0.03 - 1e-12) first.solver->step(0.03);
+  const fs::path file = fs::temp_directory_path() / "mistfall_two_phase_resume.ckpt";
+  writeCheckpoint<2>(file, first.state);
+  TankRun second(coarseBubbleCase());
+  second.state = readCheckpoint<2>(file);
+  fs::remove(file);
+  second.solver = std::make_unique<MpsSolver<2>>(second.config, second.state);
+  EXPECT_GT(std::count(second.state.particles.enclosed.begin(), second.state.particles.enclosed.end(), 1), 50);
+  while (second.state.time < 0.06 - 1e-12) second.solver->step(0.06);
+  EXPECT_EQ(whole.state.step, second.state.step);
+  test_support::expectSameParticles(whole.state.particles, second.state.particles);
 }

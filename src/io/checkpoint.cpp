@@ -20,7 +20,7 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2 added the enclosed flags
 
 struct Header {
   std::uint32_t version = kVersion;
@@ -129,7 +129,7 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
   const Particles<D>& p = s.particles;
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.pressure.size() != n || p.number_density.size() != n || p.kind.size() != n ||
-      p.phase.size() != n) {
+      p.phase.size() != n || p.enclosed.size() != n) {
     throw std::runtime_error("writeCheckpoint '" + file.string() + "': particle arrays have different lengths");
   }
   writeFileAtomically(file, [&](std::ostream& os) {
@@ -156,6 +156,7 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
       w.raw(p.number_density.data(), n * sizeof(double));
       w.raw(p.kind.data(), n);
       w.raw(p.phase.data(), n);
+      w.raw(p.enclosed.data(), n);
     }
     const std::uint64_t sum = w.checksum();
     os.write(reinterpret_cast<const char*>(&sum), sizeof(sum));
@@ -176,7 +177,7 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
     fail(file, "checkpoint is " + std::to_string(h.dimension) + "D, case is " + std::to_string(D) + "D");
   }
   // Check the size before allocating, so a corrupt count cannot ask for absurd memory.
-  const std::uint64_t per_particle = 2 * sizeof(Vec<D>) + 2 * sizeof(double) + 2;
+  const std::uint64_t per_particle = 2 * sizeof(Vec<D>) + 2 * sizeof(double) + 3;
   const std::uint64_t trailer = sizeof(std::uint64_t) + sizeof(kEndMarker);
   if (r.remaining() < trailer || h.count > (r.remaining() - trailer) / per_particle) {
     fail(file, "file is truncated (header says " + std::to_string(h.count) + " particles)");
@@ -194,6 +195,7 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
   readVector(r, p.number_density, n);
   readVector(r, p.kind, n);
   readVector(r, p.phase, n);
+  readVector(r, p.enclosed, n);
   const std::uint64_t expected = r.checksum();
   const auto stored = r.value<std::uint64_t>();
   char end[sizeof(kEndMarker)];
@@ -203,8 +205,9 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
   if (r.remaining() != 0) fail(file, "unexpected trailing bytes");
   for (std::size_t i = 0; i < n; ++i) {
     if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Escaped) ||
-        static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas)) {
-      fail(file, "invalid particle kind/phase value");
+        static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas) ||
+        (p.enclosed[i] != 0 && p.enclosed[i] != 1)) {
+      fail(file, "invalid particle kind/phase/enclosed value");
     }
   }
   return s;

@@ -164,6 +164,7 @@ void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double t
   const std::vector<Array> point_data = {
       {"phase", 1, asBytes(p.phase)},
       {"kind", 1, asBytes(p.kind)},
+      {"enclosed", 1, asBytes(p.enclosed)},
       {"velocity", 3, padTo3<D>(p.velocity)},
       {"pressure", 1, p.pressure},
       {"number_density", 1, p.number_density},
@@ -280,6 +281,10 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
     const auto density = decodeArray<double>(file, "number_density", get("number_density", 1), appended, n);
     const auto kind = decodeArray<std::uint8_t>(file, "kind", get("kind", 1), appended, n);
     const auto phase = decodeArray<std::uint8_t>(file, "phase", get("phase", 1), appended, n);
+    // "enclosed" (delta_gl) is absent from frames written before it existed: read as 0.
+    const auto enclosed = arrays.count("enclosed")
+                              ? decodeArray<std::uint8_t>(file, "enclosed", get("enclosed", 1), appended, n)
+                              : std::vector<std::uint8_t>(n, 0);
     decodeArray<std::int64_t>(file, "connectivity", get("connectivity", 1), appended, n);
     decodeArray<std::int64_t>(file, "offsets", get("offsets", 1), appended, n);
 
@@ -290,6 +295,7 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
     p.number_density = density;
     p.kind.resize(n);
     p.phase.resize(n);
+    p.enclosed.assign(enclosed.begin(), enclosed.end());
     for (std::size_t i = 0; i < n; ++i) {
       for (int k = 0; k < D; ++k) {
         p.position[i][k] = pos3[3 * i + k];

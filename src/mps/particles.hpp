@@ -26,6 +26,7 @@ struct Particles {
   std::vector<double> number_density;
   std::vector<ParticleKind> kind;
   std::vector<Phase> phase;
+  std::vector<char> enclosed;  // delta_gl of eq. (7) at the last step: 1 for gas of a region enclosed in liquid
 
   std::size_t size() const { return position.size(); }
 
@@ -36,6 +37,7 @@ struct Particles {
     number_density.push_back(0.0);
     kind.push_back(k);
     phase.push_back(ph);
+    enclosed.push_back(0);
   }
 
   std::size_t count(ParticleKind k) const {

@@ -103,9 +103,9 @@ const StepReport& MpsSolver<D>::step(double until) {
 template <int D>
 void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
-    const auto was_enclosed = regions_.enclosed_particle;
-    findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions_,
-                      &was_enclosed);
+    auto& p = state_.particles;
+    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed);
+    p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
   } else {
     regions_ = GasRegions{};
@@ -129,7 +129,7 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   buildNeighbours();
   GasRegions regions;
   findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
-                    &regions_.enclosed_particle);
+                    &state_.particles.enclosed);
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 

@@ -19,6 +19,7 @@ void expectSameParticles(const Particles<D>& a, const Particles<D>& b) {
   EXPECT_EQ(0, std::memcmp(a.number_density.data(), b.number_density.data(), n * sizeof(double)));
   EXPECT_EQ(a.kind, b.kind);
   EXPECT_EQ(a.phase, b.phase);
+  EXPECT_EQ(a.enclosed, b.enclosed);
 }
 
 }  // namespace mistfall::test_support
