@@ -34,14 +34,15 @@ bool noTmpFiles(const fs::path& dir) {
 template <int D>
 Particles<D> sampleParticles(std::size_t n) {
   Particles<D> p;
-  const ParticleKind kinds[] = {ParticleKind::Fluid, ParticleKind::Wall, ParticleKind::Dummy, ParticleKind::Escaped};
+  const ParticleKind kinds[] = {ParticleKind::Fluid, ParticleKind::Wall, ParticleKind::Dummy, ParticleKind::Escaped,
+                                ParticleKind::Inflow};
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> x, u;
     for (int k = 0; k < D; ++k) {
       x[k] = 0.1 * static_cast<double>(i) + 1.0 / (3.0 + k) - 1e-17 * k;
       u[k] = std::sin(1.7 * static_cast<double>(i) + k) * 1e-3 / 7.0;
     }
-    p.add(x, u, kinds[i % 4], (i % 3 == 0) ? Phase::Gas : Phase::Liquid);
+    p.add(x, u, kinds[i % 5], (i % 3 == 0) ? Phase::Gas : Phase::Liquid);
     p.pressure.back() = 1000.0 / 3.0 * static_cast<double>(i) - 5.0;
     p.number_density.back() = 6.0 + std::cos(static_cast<double>(i)) / 11.0;
     p.enclosed.back() = (i % 6 == 0);  // some gas particles in a bubble
@@ -157,7 +158,8 @@ TEST(Pvd, AddWriteLoadTruncate) {
 TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(
       "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
-      "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size",
+      "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
+      "inflow,created,removed,inflow_rate,outflow_rate",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -167,6 +169,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.liquid = 10; r.gas = 2; r.wall = 3; r.dummy = 4; r.escaped = 5;
   r.max_speed = 1.25; r.kinetic_energy = 0.5; r.ppe_iterations = 42; r.ppe_residual = 1e-9; r.wall_seconds = 12.5;
   r.bubbles = 2; r.bubble_particles = 77; r.bubble_pressure = 563.25; r.bubble_y = 0.0925; r.bubble_size = 4.8e-4;
+  r.inflow = 120; r.created = 4000; r.removed = 3900; r.inflow_rate = 6400.5; r.outflow_rate = 6399.25;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -184,6 +187,11 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(563.25, rows[0].bubble_pressure);
   EXPECT_EQ(0.0925, rows[0].bubble_y);
   EXPECT_EQ(4.8e-4, rows[0].bubble_size);
+  EXPECT_EQ(120u, rows[0].inflow);
+  EXPECT_EQ(4000, rows[0].created);
+  EXPECT_EQ(3900, rows[0].removed);
+  EXPECT_EQ(6400.5, rows[0].inflow_rate);
+  EXPECT_EQ(6399.25, rows[0].outflow_rate);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 
@@ -254,6 +262,8 @@ SimulationState<D> sampleState() {
   s.step = 9876543210LL;
   s.dt = 1.0 / 7.0 * 1e-4;
   s.next_frame = 17;
+  s.created = 1234567;
+  s.removed = 7654321;
   s.particles = sampleParticles<D>(101);
   return s;
 }
@@ -270,6 +280,8 @@ void checkpointRoundTrip() {
   EXPECT_EQ(0, std::memcmp(&s.dt, &r.dt, sizeof(double)));
   EXPECT_EQ(s.step, r.step);
   EXPECT_EQ(s.next_frame, r.next_frame);
+  EXPECT_EQ(s.created, r.created);
+  EXPECT_EQ(s.removed, r.removed);
   expectSameParticles(s.particles, r.particles);
 }
 

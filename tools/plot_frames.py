@@ -30,7 +30,7 @@ except ImportError as e:  # pragma: no cover
 
 NUMPY_TYPE = {"Float64": "<f8", "Float32": "<f4", "UInt8": "u1", "Int8": "i1", "Int32": "<i4", "UInt32": "<u4",
               "Int64": "<i8", "UInt64": "<u8"}
-KIND_FLUID, KIND_WALL, KIND_DUMMY, KIND_ESCAPED = 0, 1, 2, 3  # ParticleKind in src/mps/particles.hpp
+KIND_FLUID, KIND_WALL, KIND_DUMMY, KIND_ESCAPED, KIND_INFLOW = 0, 1, 2, 3, 4  # ParticleKind in src/mps/particles.hpp
 COLOR_FIELDS = ("pressure", "speed", "phase", "kind")
 
 
@@ -206,7 +206,7 @@ def colour_values(arrays, field):
         return arrays["pressure"], "pressure [Pa]", "viridis", None
     if field == "phase":
         return arrays["phase"].astype(float), "phase (0 liquid, 1 gas)", "coolwarm", (0.0, 1.0)
-    return arrays["kind"].astype(float), "kind (0 fluid, 1 wall, 2 dummy)", "viridis", (0.0, 2.0)
+    return arrays["kind"].astype(float), "kind (0 fluid, 1 wall, 2 dummy, 4 inflow)", "viridis", (0.0, 4.0)
 
 
 def plot_frame(path, out_png, title, pvd_time, field, dimension, spacing, dpi):
@@ -215,7 +215,7 @@ def plot_frame(path, out_png, title, pvd_time, field, dimension, spacing, dpi):
         time = pvd_time
     x = arrays["Points"]
     kind = arrays["kind"]
-    fluid = kind == KIND_FLUID
+    fluid = (kind == KIND_FLUID) | (kind == KIND_INFLOW)  # inflow buffers are water driven at the inflow speed
     solid = (kind == KIND_WALL) | (kind == KIND_DUMMY)
     values, label, cmap, limits = colour_values(arrays, field)
     vmin, vmax = limits if limits else (None, None)

@@ -34,6 +34,25 @@ struct Region {
   std::array<double, 3> initial_velocity{0.0, 0.0, 0.0};
 };
 
+// Open boundaries (mps/open_boundaries.hpp). An inflow buffer is a box filled with water that is driven at the
+// speed U along `axis` (sign +1 or -1) and feeds the domain one lattice layer at a time:
+// U = discharge / depth, depth = the box's extent along the axis of gravity (2D: q per unit width [m^2/s];
+// 3D: q per unit width across the box).
+struct Inflow {
+  std::string name;
+  Box box;
+  int axis = 0;            // the flow's coordinate axis
+  int sign = 1;            // +1: along +axis, -1: along -axis
+  double discharge = 0.0;  // q [m^2/s]
+  double speed = 0.0;      // U = q / depth [m/s] (set by the parser)
+};
+
+// An outflow box removes every liquid particle that enters it (the arrays are compacted); gas passes through.
+struct Outflow {
+  std::string name;
+  Box box;
+};
+
 struct PhaseProperties {
   double density = 1000.0;               // [kg/m^3]
   double kinematic_viscosity = 1.0e-6;   // [m^2/s]
@@ -86,6 +105,8 @@ struct CaseConfig {
   int dimension = 2;
   Box domain;
   std::vector<Region> regions;
+  std::vector<Inflow> inflows;
+  std::vector<Outflow> outflows;
   PhysicsConfig physics;
   NumericsConfig numerics;
   OutputConfig output;

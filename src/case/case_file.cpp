@@ -96,7 +96,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table root = detail::parseToml(toml_text, source_name);
   const Reader rd(source_name);
   CaseConfig c;
-  rd.checkKeys(root, "", {"case", "domain", "physics", "numerics", "output", "region"});
+  rd.checkKeys(root, "", {"case", "domain", "physics", "numerics", "output", "region", "inflow", "outflow"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");
@@ -179,6 +179,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   for (std::size_t i = 0; i < ra.size(); ++i)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
+  detail::readOpenBoundaries(rd, root, c);
   return c;
 }
 

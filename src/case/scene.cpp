@@ -171,6 +171,17 @@ std::int64_t domainLatticeCount(const CaseConfig& c, int axis) {
   return firstIndexAtOrAbove(c.domain.max[axis], c.domain.min[axis], c.numerics.particle_spacing);
 }
 
+std::vector<double> latticeCoordinates(const CaseConfig& c, const Box& b, int axis) {
+  const IndexRange r = boxRange(c, b);
+  std::vector<double> x;
+  for (std::int64_t i = r.lo[axis]; i < r.hi[axis]; ++i) {
+    Index index{0, 0, 0};
+    index[axis] = i;
+    x.push_back(latticeCoordinate(c, index, axis));
+  }
+  return x;
+}
+
 std::size_t countLatticePoints(const CaseConfig& c, const Box& b) {
   const IndexRange r = boxRange(c, b);
   if (r.empty(c.dimension)) return 0;
@@ -230,6 +241,18 @@ Particles<D> buildParticles(const CaseConfig& c) {
   p.kind.reserve(total);
   p.phase.reserve(total);
 
+  // Inflow buffers replace the water and gas inside them.
+  std::vector<IndexRange> inflow_ranges;
+  for (const Inflow& in : c.inflows) inflow_ranges.push_back(boxRange(c, in.box));
+  auto inInflow = [&](const Index& i) {
+    for (const IndexRange& r : inflow_ranges) {
+      bool inside = true;
+      for (int k = 0; k < D; ++k) inside = inside && r.lo[k] <= i[k] && i[k] < r.hi[k];
+      if (inside) return true;
+    }
+    return false;
+  };
+
   // Water, then gas: one region after another in file order, each in lexicographic lattice order.
   for (const Material m : {Material::Water, Material::Gas}) {
     const Phase phase = m == Material::Water ? Phase::Liquid : Phase::Gas;
@@ -238,9 +261,17 @@ Particles<D> buildParticles(const CaseConfig& c) {
       Vec<D> u;
       for (int k = 0; k < D; ++k) u[k] = c.regions[r].initial_velocity[k];
       forEachRegionPoint(c, all, r, [&](const Index& i) {
-        p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, phase);
+        if (!inInflow(i)) p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, phase);
       });
     }
+  }
+  // Then the inflow buffers' water, driven at the inflow speed (kind Inflow), in file order.
+  for (std::size_t b = 0; b < c.inflows.size(); ++b) {
+    Vec<D> u = Vec<D>::Zero();
+    u[c.inflows[b].axis] = c.inflows[b].sign * c.inflows[b].speed;
+    forEachIndex<D>(inflow_ranges[b], [&](const Index& i) {
+      p.add(latticePoint<D>(c, i), u, ParticleKind::Inflow, Phase::Liquid);
+    });
   }
 
   IndexRange around;

@@ -33,8 +33,12 @@ std::size_t countLatticePoints(const CaseConfig& c, const Region& r);
 // wall region all its points (points shared by several wall regions count in each).
 std::vector<std::size_t> regionParticleCounts(const CaseConfig& c);
 
+// Coordinates along `axis` of the lattice points inside box `b` (clipped to the domain), ascending.
+std::vector<double> latticeCoordinates(const CaseConfig& c, const Box& b, int axis);
+
 // Particles for the case: water first (regions in file order, each in lexicographic lattice order with
-// axis 0 slowest, points lost to overlaps skipped), then gas (same rule), then the union of wall regions in
+// axis 0 slowest, points lost to overlaps or inside an inflow box skipped), then gas (same rule), then the
+// lattice points of each inflow box (kind Inflow, water, at the inflow velocity), then the union of wall regions in
 // lexicographic order. A solid point is Wall if one of its 3^D - 1 lattice neighbours inside the domain is
 // not solid (water, gas or empty), otherwise Dummy.
 // Requires c.dimension == D (throws std::invalid_argument otherwise).

@@ -11,6 +11,10 @@
 
 #include <toml++/toml.h>
 
+namespace mistfall {
+struct CaseConfig;
+}
+
 namespace mistfall::detail {
 
 // Short rendering of any value for error messages.
@@ -76,5 +80,8 @@ class Reader {
  private:
   std::string src_;
 };
+
+// The [[inflow]] and [[outflow]] tables (case_boundaries.cpp); needs the domain, gravity and regions already read.
+void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c);
 
 }  // namespace mistfall::detail

@@ -70,6 +70,8 @@ DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& conf
     row.bubble_z = largest->centroid[2];
     row.bubble_size = largest->size;
   }
+  row.created = s.created;
+  row.removed = s.removed;
   return row;
 }
 
@@ -78,10 +80,11 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   const fs::path dir = options.out_dir;
   SimulationState<D> state;
   double wall_offset = 0.0;
+  std::optional<DiagnosticsRow> previous;  // the last row written (open-boundary rates are since it)
   if (options.resume) {
     state = readCheckpoint<D>(dir / kCheckpoint);
     for (const auto& row : DiagnosticsWriter::read(dir / kDiagnostics))
-      if (row.time <= state.time + 1e-12) wall_offset = row.wall_seconds;
+      if (row.time <= state.time + 1e-12) wall_offset = row.wall_seconds, previous = row;
   } else {
     state.particles = buildParticles<D>(config);
   }
@@ -107,7 +110,13 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     collection.add(state.time, name);
     collection.write();
     const auto bubbles = solver.currentBubbles();
-    diagnostics.append(diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start));
+    DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
+    if (previous && row.time > previous->time) {
+      row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
+      row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
+    }
+    diagnostics.append(row);
+    previous = row;
     bubble_log.append(state.time, bubbles);
     state.next_frame += 1;
     writeCheckpoint<D>(dir / kCheckpoint, state);

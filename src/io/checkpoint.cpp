@@ -30,6 +30,8 @@ struct Header {
   std::int64_t step = 0;
   double dt = 0.0;
   std::int64_t next_frame = 0;
+  std::int64_t created = 0;
+  std::int64_t removed = 0;
 };
 // (Serialized field by field, so struct padding never reaches the file.)
 
@@ -113,6 +115,8 @@ Header readHeader(Reader& r, const std::filesystem::path& file) {
   h.step = r.value<std::int64_t>();
   h.dt = r.value<double>();
   h.next_frame = r.value<std::int64_t>();
+  h.created = r.value<std::int64_t>();
+  h.removed = r.value<std::int64_t>();
   return h;
 }
 
@@ -142,6 +146,8 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
     h.step = s.step;
     h.dt = s.dt;
     h.next_frame = s.next_frame;
+    h.created = s.created;
+    h.removed = s.removed;
     w.value(h.version);
     w.value(h.dimension);
     w.value(h.count);
@@ -149,6 +155,8 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
     w.value(h.step);
     w.value(h.dt);
     w.value(h.next_frame);
+    w.value(h.created);
+    w.value(h.removed);
     if (n) {
       w.raw(p.position.data(), n * sizeof(Vec<D>));
       w.raw(p.velocity.data(), n * sizeof(Vec<D>));
@@ -187,6 +195,8 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
   s.step = h.step;
   s.dt = h.dt;
   s.next_frame = static_cast<int>(h.next_frame);
+  s.created = h.created;
+  s.removed = h.removed;
   const std::size_t n = h.count;
   Particles<D>& p = s.particles;
   readVector(r, p.position, n);
@@ -204,7 +214,7 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
   if (stored != expected) fail(file, "checksum mismatch (file corrupted)");
   if (r.remaining() != 0) fail(file, "unexpected trailing bytes");
   for (std::size_t i = 0; i < n; ++i) {
-    if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Escaped) ||
+    if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Inflow) ||
         static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas) ||
         (p.enclosed[i] != 0 && p.enclosed[i] != 1)) {
       fail(file, "invalid particle kind/phase/enclosed value");

@@ -8,7 +8,7 @@
 namespace mistfall {
 
 // Layout (little-endian): "MISTFALLCKPT", uint32 version (2), uint32 dimension, uint64 particle count,
-// float64 time, int64 step, float64 dt, int64 next_frame, then position (N*D float64), velocity (N*D),
+// float64 time, int64 step, float64 dt, int64 next_frame, int64 created, int64 removed (open boundaries), then position (N*D float64), velocity (N*D),
 // pressure (N), number_density (N), kind (N uint8), phase (N uint8), enclosed (N uint8: delta_gl, the
 // flag bubbles keep from step to step), uint64 FNV-1a checksum of every
 // byte after the magic, and the end marker "MISTFALLEND!". Written atomically.

@@ -75,6 +75,11 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::bubble_y>("bubble_y"),
     column<&DiagnosticsRow::bubble_z>("bubble_z"),
     column<&DiagnosticsRow::bubble_size>("bubble_size"),
+    column<&DiagnosticsRow::inflow>("inflow"),
+    column<&DiagnosticsRow::created>("created"),
+    column<&DiagnosticsRow::removed>("removed"),
+    column<&DiagnosticsRow::inflow_rate, 9>("inflow_rate"),
+    column<&DiagnosticsRow::outflow_rate, 9>("outflow_rate"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {
@@ -172,13 +177,14 @@ void DiagnosticsWriter::append(const DiagnosticsRow& row) {
 template <int D>
 void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_particle_mass,
                       double gas_particle_mass) {
-  row.liquid = row.gas = row.wall = row.dummy = row.escaped = 0;
+  row.liquid = row.gas = row.wall = row.dummy = row.escaped = row.inflow = 0;
   double max_speed2 = 0.0, energy = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     switch (p.kind[i]) {
       case ParticleKind::Wall: ++row.wall; break;
       case ParticleKind::Dummy: ++row.dummy; break;
       case ParticleKind::Escaped: ++row.escaped; break;
+      case ParticleKind::Inflow: ++row.inflow; break;
       case ParticleKind::Fluid: {
         const bool liquid = p.phase[i] == Phase::Liquid;
         ++(liquid ? row.liquid : row.gas);

@@ -28,6 +28,11 @@ struct DiagnosticsRow {
   double bubble_pressure = 0;                         // its mean pressure [Pa]
   double bubble_x = 0, bubble_y = 0, bubble_z = 0;    // its centroid [m]
   double bubble_size = 0;                             // its area [m^2] (2D) or volume [m^3] (3D)
+  // Open boundaries (open_boundaries.hpp): driven inflow particles now; particles created by the inflows and
+  // removed by the outflows since the start (cumulative); their rates since the previous row [particles/s].
+  std::size_t inflow = 0;
+  std::int64_t created = 0, removed = 0;
+  double inflow_rate = 0, outflow_rate = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

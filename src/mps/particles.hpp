@@ -13,7 +13,9 @@ namespace mistfall {
 //  Fluid: moves, pressure solved.       Wall: fixed, pressure solved (Neumann-like boundary).
 //  Dummy: fixed, counts in number density only (fills the wall's influence region).
 //  Escaped: left the domain; frozen and ignored by every operator, still counted.
-enum class ParticleKind : std::uint8_t { Fluid = 0, Wall = 1, Dummy = 2, Escaped = 3 };
+//  Inflow: water in an inflow buffer (open_boundaries.hpp): driven at the inflow velocity, pressure solved like a
+//          wall's; it becomes Fluid when it leaves the buffer.
+enum class ParticleKind : std::uint8_t { Fluid = 0, Wall = 1, Dummy = 2, Escaped = 3, Inflow = 4 };
 
 // Which phase a particle carries (the second phase arrives with the gas model).
 enum class Phase : std::uint8_t { Liquid = 0, Gas = 1 };
@@ -45,6 +47,28 @@ struct Particles {
     for (auto v : kind) c += (v == k);
     return c;
   }
+  // Removes the particles with remove[i] != 0 from every array, keeping the order of the others.
+  void erase(const std::vector<char>& remove) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < size(); ++i) {
+      if (remove[i]) continue;
+      position[kept] = position[i];
+      velocity[kept] = velocity[i];
+      pressure[kept] = pressure[i];
+      number_density[kept] = number_density[i];
+      kind[kept] = kind[i];
+      phase[kept] = phase[i];
+      enclosed[kept] = enclosed[i];
+      ++kept;
+    }
+    position.resize(kept);
+    velocity.resize(kept);
+    pressure.resize(kept);
+    number_density.resize(kept);
+    kind.resize(kept);
+    phase.resize(kept);
+    enclosed.resize(kept);
+  }
   std::size_t count(ParticleKind k, Phase ph) const {
     std::size_t c = 0;
     for (std::size_t i = 0; i < kind.size(); ++i) c += (kind[i] == k && phase[i] == ph);
@@ -52,7 +76,14 @@ struct Particles {
   }
 };
 
-inline bool isFixed(ParticleKind k) { return k == ParticleKind::Wall || k == ParticleKind::Dummy; }
+// Not moved by fluid forces (pressure, collisions): walls, dummies and the driven inflow particles.
+inline bool isFixed(ParticleKind k) {
+  return k == ParticleKind::Wall || k == ParticleKind::Dummy || k == ParticleKind::Inflow;
+}
+// Carries a pressure unknown (off the free surface): fluid, wall and inflow particles.
+inline bool hasPressureUnknown(ParticleKind k) {
+  return k == ParticleKind::Fluid || k == ParticleKind::Wall || k == ParticleKind::Inflow;
+}
 inline bool isActive(ParticleKind k) { return k != ParticleKind::Escaped; }
 
 }  // namespace mistfall

@@ -29,6 +29,14 @@ struct CouplingRoles {
   std::size_t enclosed_count = 0;      // gas particles of bubbles
 
   bool inGasSystem(std::size_t i) const { return open_gas[i] || enclosed_gas[i]; }
+
+  // Roles for particles appended since assignCouplingRoles (inflow water): liquid-system particles.
+  void extendForLiquid(std::size_t n) {
+    open_gas.resize(n, 0);
+    enclosed_gas.resize(n, 0);
+    in_liquid_system.resize(n, 1);
+    gas_side_wall.resize(n, 0);
+  }
 };
 
 // From the gas regions of this step: bubble gas = gas fluid particles of enclosed regions of at least
@@ -68,7 +76,7 @@ void markGasSideWalls(const Particles<D>& p, const NeighborList& nl, double radi
   const double r2max = radius * radius;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (roles.inGasSystem(i) || !(p.kind[i] == ParticleKind::Wall || p.kind[i] == ParticleKind::Fluid)) continue;
+    if (roles.inGasSystem(i) || !hasPressureUnknown(p.kind[i])) continue;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
       if (roles.inGasSystem(j) && (p.position[j] - p.position[i]).squaredNorm() < r2max) {

@@ -20,7 +20,7 @@ PressureProblem singlePhaseProblem(const Particles<D>& p, const PhaseProperties&
   problem.density = liquid.density;
   for (std::size_t i = 0; i < n; ++i) {
     const auto k = p.kind[i];
-    problem.takes_part[i] = k == ParticleKind::Fluid || k == ParticleKind::Wall;
+    problem.takes_part[i] = hasPressureUnknown(k);
     problem.unknown[i] = problem.takes_part[i] && !surface[i];
     problem.carries_velocity[i] = isActive(k);
   }

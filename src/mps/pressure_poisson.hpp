@@ -41,7 +41,7 @@ template <int D>
 std::vector<char> freeSurfaceFlags(const Particles<D>& p, double beta, double n0) {
   std::vector<char> surface(p.size(), 0);
   for (std::size_t i = 0; i < p.size(); ++i)
-    surface[i] = (p.kind[i] == ParticleKind::Fluid || p.kind[i] == ParticleKind::Wall) &&
+    surface[i] = hasPressureUnknown(p.kind[i]) &&
                  p.number_density[i] < beta * n0;
   return surface;
 }

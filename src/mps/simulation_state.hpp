@@ -13,6 +13,8 @@ struct SimulationState {
   std::int64_t step = 0;      // steps taken
   double dt = 0.0;            // last time step [s]
   int next_frame = 0;         // index of the next frame to write
+  std::int64_t created = 0;   // particles created by inflows since the start
+  std::int64_t removed = 0;   // particles removed by outflows since the start
   Particles<D> particles;
 };
 

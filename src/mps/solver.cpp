@@ -13,6 +13,7 @@
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
+#include "mps/open_boundaries.hpp"
 #include "mps/time_step.hpp"
 
 namespace mistfall {
@@ -41,7 +42,6 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
                                       config.numerics.solver_max_iterations)) {
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
-    initial_fluid_ += (k == ParticleKind::Fluid || k == ParticleKind::Escaped);
     if (k == ParticleKind::Fluid) phase_present_[static_cast<int>(state_.particles.phase[i])] = true;
   }
 }
@@ -71,6 +71,15 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double dt = chooseTimeStepFor(until);
   predict(dt);
   collide(dt);
+  report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
+  state_.created += report_.created;
+  if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
+    const std::size_t n = state_.particles.size();
+    roles_.extendForLiquid(n);
+    regions_.region_of.resize(n, -1);
+    regions_.enclosed_particle.resize(n, 0);
+    bubble_pressure_.resize(n, 0.0);
+  }
   buildNeighbours();
   // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
   computeLiquidNumberDensity();
@@ -89,6 +98,8 @@ const StepReport& MpsSolver<D>::step(double until) {
     correctGas(dt);
   }
   markEscaped();
+  report_.removed = removeOutflow<D>(state_.particles, config_);
+  state_.removed += report_.removed;
   state_.time = (until - state_.time <= dt) ? until : state_.time + dt;
   state_.step += 1;
   state_.dt = dt;
@@ -261,7 +272,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
                                   : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto k = p.kind[i];
-    problem_.takes_part[i] = roles_.in_liquid_system[i] && (k == ParticleKind::Fluid || k == ParticleKind::Wall);
+    problem_.takes_part[i] = roles_.in_liquid_system[i] && hasPressureUnknown(k);
     if (roles_.enclosed_gas[i]) {
       problem_.unknown[i] = 1;
       problem_.sound_speed[i] = std::numeric_limits<double>::infinity();
@@ -327,7 +338,7 @@ void MpsSolver<D>::correctLiquid(double dt) {
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   const auto& in_system = roles_.in_liquid_system;
   auto solvedPressure = [&](std::int32_t j) {
-    return in_system[j] && (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Wall);
+    return in_system[j] && hasPressureUnknown(p.kind[j]);
   };
   auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
 #pragma omp parallel for schedule(static)
@@ -449,11 +460,13 @@ void MpsSolver<D>::checkHealth(double) const {
       throw DivergenceError(msg.str(), state_.time, state_.step);
     }
   }
+  // Every fluid particle that has existed: in the domain, driven in an inflow, escaped, or removed by an outflow.
   const std::size_t escaped = p.count(ParticleKind::Escaped);
-  if (initial_fluid_ > 0 &&
-      static_cast<double>(escaped) > config_.numerics.max_escaped_fraction * static_cast<double>(initial_fluid_)) {
+  const std::size_t total = p.count(ParticleKind::Fluid) + p.count(ParticleKind::Inflow) + escaped +
+                            static_cast<std::size_t>(state_.removed);
+  if (total > 0 && static_cast<double>(escaped) > config_.numerics.max_escaped_fraction * static_cast<double>(total)) {
     std::ostringstream msg;
-    msg << escaped << " of " << initial_fluid_ << " fluid particles have left the domain (more than "
+    msg << escaped << " of " << total << " fluid particles have left the domain (more than "
         << "numerics.max_escaped_fraction = " << config_.numerics.max_escaped_fraction << ")";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }

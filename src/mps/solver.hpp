@@ -1,13 +1,13 @@
 // The MPS time step (semi-implicit two-step method of Koshizuka & Oka, MODEL.md section 1), with the gas-liquid
 // coupling of eqs. (5)-(8) (docs/two-phase.md):
 //   buildNeighbours -> findBubbles (delta_gl) -> chooseTimeStep -> predict (viscosity + gravity, explicit)
-//   -> collide -> buildNeighbours at r*
+//   -> collide -> advanceInflows (open_boundaries.hpp) -> buildNeighbours at r*
 //   -> liquid system: numberDensity n* -> solveLiquidPressure (eq. (9), one unknown per bubble with eq. (17)'s
 //      shift) -> extrapolateDummyPressure -> correctLiquid (-dt/rho grad p)
 //   -> moveBubbleGas (the bubbles' gas takes the liquid's velocity, extended into the bubble)
 //   -> gas system (when gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
 //      -> correctGas (open gas: velocity and position; bubble gas: position only)
-//   -> markEscaped -> checkHealth
+//   -> markEscaped -> removeOutflow -> checkHealth
 #pragma once
 
 #include <array>
@@ -50,6 +50,8 @@ struct StepReport {
   int gas_ppe_iterations = 0;      // the gas system (0 when there is no open gas)
   std::size_t gas_ppe_unknowns = 0;
   std::size_t bubbles = 0;         // enclosed gas regions at the start of the step
+  std::int64_t created = 0;        // particles created by inflows in the step
+  std::int64_t removed = 0;        // particles removed by outflows in the step
 };
 
 template <int D>
@@ -94,7 +96,6 @@ class MpsSolver {
   std::array<PhaseProperties, 2> phases_;
   Vec<D> gravity_;
   Vec<D> domain_lower_, domain_upper_;
-  std::size_t initial_fluid_ = 0;
   std::array<bool, 2> phase_present_{false, false};
   NeighborSearch<D> search_;
   NeighborList neighbours_;

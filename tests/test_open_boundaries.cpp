@@ -1,0 +1,212 @@
+// Open boundaries (src/mps/open_boundaries.hpp, case_boundaries.cpp): inflow buffers create water one lattice
+// layer at a time and deliver the discharge q; outflow boxes remove the water that enters them; every particle
+// is accounted for (created - removed = change of the water in the domain); the case-file checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "mps/open_boundaries.hpp"
+#include "mps/solver.hpp"
+#include "support/case_text.hpp"
+
+using namespace mistfall;
+using test_support::errorOf;
+
+namespace {
+
+// A horizontal channel 5 cm deep on a floor that ends at x = 0.4; the inflow buffer (4 cm long, under a gate)
+// at its upstream end feeds q = 0.016 m^2/s (U = 0.32 m/s); the water falls off the end into an outflow box
+// (x >= 0.42 m).
+// l0 = 1 cm, water only.
+std::string channelCase(const std::string& direction = "[1, 0]") {
+  return R"(
+[case]
+name = "channel"
+dimension = 2
+[domain]
+min = [-0.04, -0.3]
+max = [0.64, 0.3]
+[numerics]
+particle_spacing = 0.01
+dt_max = 5e-4
+pressure_source = "mixed"
+source_relaxation = 0.01
+[output]
+end_time = 2.0
+[[region]]
+name = "water"
+material = "water"
+min = [0.04, 0.0]
+max = [0.4, 0.05]
+velocity = [0.32, 0.0]
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.04, -0.04]
+max = [0.4, 0.0]
+[[region]]
+name = "back"
+material = "wall"
+min = [-0.04, 0.0]
+max = [0.0, 0.1]
+[[region]]
+name = "gate"
+material = "wall"
+min = [0.0, 0.05]
+max = [0.05, 0.09]
+[[inflow]]
+name = "upstream"
+min = [0.0, 0.0]
+max = [0.04, 0.05]
+direction = )" + direction + R"(
+discharge = 0.016
+[[outflow]]
+name = "end"
+min = [0.42, -0.3]
+max = [0.64, 0.3]
+)";
+}
+
+struct ChannelRun {
+  CaseConfig config;
+  SimulationState<2> state;
+  std::unique_ptr<MpsSolver<2>> solver;
+  explicit ChannelRun(const std::string& text) : config(parseCase(text, "channel.toml")) {
+    state.particles = buildParticles<2>(config);
+    solver = std::make_unique<MpsSolver<2>>(config, state);
+  }
+  void advanceTo(double t) {
+    while (state.time < t - 1e-12) solver->step(t);
+  }
+  std::size_t water() const {
+    return state.particles.count(ParticleKind::Fluid, Phase::Liquid) + state.particles.count(ParticleKind::Inflow);
+  }
+};
+
+}  // namespace
+
+TEST(OpenBoundaries, CaseFileGivesTheInflowSpeedFromTheDischarge) {
+  const CaseConfig c = parseCase(channelCase(), "channel.toml");
+  ASSERT_EQ(1u, c.inflows.size());
+  EXPECT_EQ(0, c.inflows[0].axis);
+  EXPECT_EQ(1, c.inflows[0].sign);
+  EXPECT_DOUBLE_EQ(0.016, c.inflows[0].discharge);
+  EXPECT_NEAR(0.32, c.inflows[0].speed, 1e-12);  // q / depth, depth 0.05 m along gravity
+  ASSERT_EQ(1u, c.outflows.size());
+  // The buffer's lattice points are Inflow water at U; none of the channel's water lies in it.
+  const auto p = buildParticles<2>(c);
+  std::size_t inflow = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != ParticleKind::Inflow) continue;
+    ++inflow;
+    EXPECT_EQ(0.32, p.velocity[i][0]);
+    EXPECT_LT(p.position[i][0], 0.04);
+  }
+  EXPECT_EQ(4u * 5u, inflow);
+}
+
+TEST(OpenBoundaries, BufferCreatesOneLayerPerSpacingTravelledAndReleasesItsFront) {
+  const CaseConfig c = parseCase(channelCase(), "channel.toml");
+  auto p = buildParticles<2>(c);
+  const std::size_t before = p.size();
+  // The lattice layers sit at x = 0.005 .. 0.035; after 0.004 m nothing fits behind the upstream layer.
+  EXPECT_EQ(0, advanceInflows<2>(p, c, 0.004 / 0.32));
+  EXPECT_EQ(before, p.size());
+  // After 0.002 m more (0.006 in all) a layer fits at x = 0.001: 5 particles, spaced l0 across the flow.
+  EXPECT_EQ(5, advanceInflows<2>(p, c, 0.002 / 0.32));
+  ASSERT_EQ(before + 5, p.size());
+  for (std::size_t i = before; i < p.size(); ++i) {
+    EXPECT_EQ(ParticleKind::Inflow, p.kind[i]);
+    EXPECT_NEAR(0.001, p.position[i][0], 1e-12);
+    EXPECT_NEAR(0.005 + 0.01 * static_cast<double>(i - before), p.position[i][1], 1e-12);
+  }
+  // The front layer (x = 0.041 now) has crossed the downstream face x = 0.04: it is free water.
+  std::size_t released = 0;
+  for (std::size_t i = 0; i < before; ++i)
+    if (p.kind[i] == ParticleKind::Fluid && std::abs(p.position[i][0] - 0.041) < 1e-12) ++released;
+  EXPECT_EQ(5u, released);
+}
+
+TEST(OpenBoundaries, ReversedInflowFeedsTowardsMinusX) {
+  // The same buffer driven along -x: layers are created at its upstream face x = 0.04 and released at x < 0.
+  std::string text = channelCase("[-1, 0]");
+  const CaseConfig c = parseCase(text, "channel.toml");
+  auto p = buildParticles<2>(c);
+  const std::size_t before = p.size();
+  EXPECT_EQ(5, advanceInflows<2>(p, c, 0.006 / 0.32));
+  for (std::size_t i = before; i < p.size(); ++i) {
+    EXPECT_NEAR(0.039, p.position[i][0], 1e-12);
+    EXPECT_EQ(-0.32, p.velocity[i][0]);
+  }
+}
+
+TEST(OpenBoundaries, ChannelDeliversTheDischargeAndEveryParticleIsAccountedFor) {
+  ChannelRun r(channelCase());
+  const std::size_t water0 = r.water();
+  r.advanceTo(1.0);  // start-up: the channel draws down to its steady profile over the brink
+  const std::int64_t created0 = r.state.created;
+  // Discharge through the section x = 0.2 m: count the water particles that cross it.
+  const double section = 0.2, l0 = 0.01;
+  std::vector<double> x_before(r.state.particles.size());
+  std::int64_t crossed = 0;
+  while (r.state.time < 2.0 - 1e-12) {
+    const auto& p = r.state.particles;
+    x_before.assign(p.size(), -1.0);
+    for (std::size_t i = 0; i < p.size(); ++i) x_before[i] = p.position[i][0];
+    const auto& report = r.solver->step(2.0);
+    // A step may append created particles and compact removed ones; removal happens at x >= 0.42 only, so the
+    // indices of particles near the section are unchanged when nothing was removed.
+    if (report.removed == 0) {
+      for (std::size_t i = 0; i < x_before.size(); ++i)
+        if (p.kind[i] == ParticleKind::Fluid && x_before[i] < section && p.position[i][0] >= section) ++crossed;
+    } else {
+      // Compaction moved indices: count this step's crossings by position only (particles within one step of it).
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.kind[i] == ParticleKind::Fluid && p.position[i][0] >= section &&
+            p.position[i][0] - report.dt * p.velocity[i][0] < section)
+          ++crossed;
+    }
+  }
+  const double q_created = static_cast<double>(r.state.created - created0) * l0 * l0 / 1.0;
+  const double q_section = static_cast<double>(crossed) * l0 * l0 / 1.0;
+  EXPECT_NEAR(0.016, q_created, 0.02 * 0.016) << "created at the buffer";
+  EXPECT_NEAR(0.016, q_section, 0.02 * 0.016) << "through x = 0.2 m";
+  // Outflow removed the water that fell off the end, and nothing else left: created - removed = change in water.
+  EXPECT_GT(r.state.removed, 200);
+  EXPECT_EQ(0u, r.state.particles.count(ParticleKind::Escaped));
+  EXPECT_EQ(static_cast<std::int64_t>(r.water()) - static_cast<std::int64_t>(water0),
+            r.state.created - r.state.removed);
+  for (std::size_t i = 0; i < r.state.particles.size(); ++i)
+    if (r.state.particles.kind[i] == ParticleKind::Fluid) EXPECT_LT(r.state.particles.position[i][0], 0.42);
+}
+
+TEST(OpenBoundaries, CaseFileErrorsNameTheKeyAndTheRule) {
+  test_support::Parts base;
+  base.physics = "[physics]\ngravity = [0.0, -9.81]\n";
+  base.regions += "[[region]]\nname = \"wall\"\nmaterial = \"wall\"\nmin = [0.8, 0.0]\nmax = [1.0, 0.2]\n";
+  auto with = [&](const std::string& extra) {
+    test_support::Parts p = base;
+    p.regions += extra;
+    return errorOf(p.text());
+  };
+  const std::string box = "min = [0.5, 0.5]\nmax = [0.7, 0.7]\n";
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [1, 1]\ndischarge = 0.01\n"),
+             "inflow[0].direction is not a unit coordinate vector");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [0, -1]\ndischarge = 0.01\n"),
+             "inflow[0].direction is along gravity");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [1, 0]\ndischarge = 0\n"),
+             "inflow[0].discharge");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [1, 0]\n"), "inflow[0].discharge");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\nmin = [0.5, 0.5]\nmax = [1.5, 0.7]\ndirection = [1, 0]\ndischarge = 0.01\n"),
+             "leaves the domain");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\nmin = [0.7, 0.0]\nmax = [0.9, 0.1]\ndirection = [1, 0]\ndischarge = 0.01\n"),
+             "overlaps wall region \"wall\"");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [1, 0]\ndischarge = 0.01\nspeed = 2\n"),
+             "speed");
+  EXPECT_HAS(with("[[inflow]]\nname = \"i\"\n" + box + "direction = [1, 0]\ndischarge = 0.01\n"
+                  "[[outflow]]\nname = \"o\"\nmin = [0.6, 0.6]\nmax = [0.9, 0.9]\n"),
+             "outflow[0] overlaps inflow \"i\"");
+  EXPECT_HAS(with("[[outflow]]\nname = \"o\"\nmin = [0.6, 0.6]\nmax = [0.5, 0.9]\n"), "outflow[0].min[0]");
+}
