@@ -20,6 +20,7 @@
 #include "cli/simulate.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
+#include "io/grid_fields.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
 #include "support/same_particles.hpp"
@@ -681,3 +682,36 @@ TEST(SimulateAscii, AsciiFramesReadBackEqualToBinaryOnes) {
 }
 
 }  // namespace
+
+// output.field_spacing > 0: every frame also writes fields/fields_NNNNN.vti (io/grid_fields.hpp) on that grid over
+// the domain, with the liquid's velocity where the water is and none where it is not.
+TEST(SimulateFields, FieldsAreWrittenPerFrameOnTheRequestedGrid) {
+  const fs::path dir = freshDir("fields");
+  std::string text = damBreakCase(0.04, 0.02);
+  text.replace(text.find("interval = 0.02"), std::strlen("interval = 0.02"), "interval = 0.02\nfield_spacing = 0.02");
+  const fs::path case_file = writeCase(dir, "case.toml", text);
+  const fs::path run = dir / "run";
+  const Captured r = simulate(options(case_file, run));
+  ASSERT_EQ(0, r.code) << r.err;
+  for (int k = 0; k < 3; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fields_%05d.vti", k);
+    ASSERT_TRUE(fs::exists(run / "fields" / name)) << name;
+  }
+  const ImageData image = readVti(run / "fields" / "fields_00002.vti");
+  EXPECT_NEAR(0.04, image.time, 1e-12);
+  EXPECT_DOUBLE_EQ(0.02, image.spacing[0]);
+  EXPECT_EQ(20, image.dims[0]);  // (0.34 - (-0.04)) / 0.02 + 1 nodes
+  const GridArray* coverage = image.find("liquid_coverage");
+  const GridArray* velocity = image.find("liquid_velocity");
+  ASSERT_TRUE(coverage && velocity);
+  // Node (x, y) = (0.04, 0.06) lies in the falling column, (0.3, 0.26) far from any water.
+  auto node = [&](double x, double y) {
+    const auto i = static_cast<std::size_t>(std::lround((x - image.origin[0]) / image.spacing[0]));
+    const auto j = static_cast<std::size_t>(std::lround((y - image.origin[1]) / image.spacing[1]));
+    return i + static_cast<std::size_t>(image.dims[0]) * j;
+  };
+  EXPECT_GT(coverage->values[node(0.04, 0.06)], 0.0);
+  EXPECT_EQ(0.0, coverage->values[node(0.3, 0.26)]);
+  EXPECT_LT(velocity->values[3 * node(0.04, 0.06) + 1], 0.0);  // the column is falling at t = 0.04 s
+}

@@ -98,6 +98,7 @@ struct NumericsConfig {
 struct OutputConfig {
   double end_time = 1.0;   // [s]
   double interval = 0.01;  // [s] between frames / checkpoints
+  double field_spacing = 0.0;  // [m] grid of the flow fields written per frame (fields/*.vti); 0 = none
 };
 
 struct CaseConfig {

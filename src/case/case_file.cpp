@@ -166,9 +166,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
 
   // [output]
   const toml::table& out = rd.table(root, "", "output");
-  rd.checkKeys(out, "output", {"end_time", "interval"});
+  rd.checkKeys(out, "output", {"end_time", "interval", "field_spacing"});
   rd.number(out, "output", "end_time", {0.0, 1e4, true, false}, c.output.end_time, true);
   rd.number(out, "output", "interval", {0.0, c.output.end_time, true, false, "output.end_time"}, c.output.interval);
+  rd.number(out, "output", "field_spacing", {0.0, 1e3, false, false}, c.output.field_spacing);
 
   // [[region]]
   Field rf = rd.field(root, "", "region");

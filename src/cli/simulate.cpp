@@ -15,9 +15,11 @@
 #include "io/bubble_log.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
+#include "io/grid_fields.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
 #include "mps/solver.hpp"
+#include "mps/sps_turbulence.hpp"
 
 namespace fs = std::filesystem;
 
@@ -36,6 +38,32 @@ std::string frameName(int frame) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "frames/frame_%05d.vtp", frame);
   return buf;
+}
+
+std::string fieldsName(int frame) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "fields/fields_%05d.vti", frame);
+  return buf;
+}
+
+// The flow fields of a frame on a grid of output.field_spacing over the domain (io/grid_fields.hpp): gas and
+// liquid velocity and SPS turbulence energy k (eqs. (25)-(26), Ds = l0, each phase from its own particles).
+template <int D>
+void writeFields(const fs::path& file, const SimulationState<D>& s, const CaseConfig& config,
+                 MpsSolver<D>& solver, bool ascii) {
+  const auto& p = s.particles;
+  SpsParameters sps;
+  sps.ds = config.numerics.particle_spacing;
+  std::vector<double> k;
+  spsTurbulenceEnergy<D>(p, solver.currentNeighbours(), solver.constants(), sps, k, samePhaseActive(p));
+  GridSpec<D> grid;
+  for (int a = 0; a < D; ++a) grid.lower[a] = config.domain.min[a], grid.upper[a] = config.domain.max[a];
+  grid.cell_size = config.output.field_spacing;
+  grid.radius = kGridSamplingRadiusRatio * config.numerics.particle_spacing;
+  const ImageData image = sampleFlowFields<D>(grid, p, k, s.time, [&](std::int32_t j) {
+    return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow;
+  });
+  writeVti(file, image, ascii);
 }
 
 std::string readText(const fs::path& file) {
@@ -110,6 +138,8 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     collection.add(state.time, name);
     collection.write();
     const auto bubbles = solver.currentBubbles();
+    if (config.output.field_spacing > 0.0)
+      writeFields<D>(dir / fieldsName(state.next_frame), state, config, solver, options.ascii);
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
@@ -191,8 +221,10 @@ int runSimulate(const SimulateOptions& options) {
         for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy, kBubbles, kDiverged})
           fs::remove(options.out_dir / f);
         fs::remove_all(options.out_dir / "frames");
+        fs::remove_all(options.out_dir / "fields");
       }
       fs::create_directories(options.out_dir / "frames");
+      if (config.output.field_spacing > 0.0) fs::create_directories(options.out_dir / "fields");
       const std::string text = readText(options.case_file);
       writeFileAtomically(options.out_dir / kCaseCopy, [&](std::ostream& out) { out << text; });
     } catch (const std::exception& e) {

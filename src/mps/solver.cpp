@@ -135,6 +135,12 @@ void MpsSolver<D>::findBubbles() {
 }
 
 template <int D>
+const NeighborList& MpsSolver<D>::currentNeighbours() {
+  buildNeighbours();
+  return neighbours_;
+}
+
+template <int D>
 std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   if (!phase_present_[static_cast<int>(Phase::Gas)]) return {};
   buildNeighbours();

@@ -67,6 +67,8 @@ class MpsSolver {
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   double particleMass(std::size_t i) const;
+  // The neighbour list rebuilt at the current particle positions (for operators run between steps).
+  const NeighborList& currentNeighbours();
   // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).
   std::vector<BubbleStats> currentBubbles();
 
