@@ -36,6 +36,17 @@ TEST(CaseFile, ShippedCasesParse) {
   EXPECT_GT(pd.count(ParticleKind::Wall), 0u);
   EXPECT_GT(pd.count(ParticleKind::Dummy), 0u);
 
+  // The waterfall: q = 0.016 m^2/s through a 5 cm deep buffer (U = 0.32 m/s), drop 0.435 - 0.15 = 0.285 m.
+  for (const char* name : {"cases/waterfall.toml", "cases/waterfall_small.toml"}) {
+    const CaseConfig w = loadCaseFile(source(name));
+    ASSERT_EQ(1u, w.inflows.size()) << name;
+    EXPECT_DOUBLE_EQ(0.016, w.inflows[0].discharge);
+    EXPECT_NEAR(0.32, w.inflows[0].speed, 1e-12);
+    EXPECT_EQ(1u, w.outflows.size());
+    EXPECT_GT(buildParticles<2>(w).count(ParticleKind::Inflow), 0u);
+  }
+  EXPECT_DOUBLE_EQ(8.5, loadCaseFile(source("cases/waterfall.toml")).output.end_time);
+
   const CaseConfig d3 = loadCaseFile(source("cases/dam_break_3d.toml"));
   EXPECT_EQ(d3.dimension, 3);
   const auto p3 = buildParticles<3>(d3);
