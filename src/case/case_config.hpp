@@ -84,6 +84,9 @@ struct NumericsConfig {
   double dt_max = 1.0e-3;               // [s] cap on the time step
   double dt_min = 1.0e-8;               // [s] a step below this is a divergence
   double surface_threshold = 0.97;      // beta: n* < beta n0 -> free surface, p = 0
+  // Also a free surface: a fluid particle with fewer neighbours within re than this fraction of a full
+  // lattice's (0 = off). Catches the clumps of a splash, whose n* is high but whose neighbourhood is not.
+  double surface_neighbour_fraction = 0.0;
   double collision_distance = 0.5;      // too-close pair distance / l0
   double collision_restitution = 0.2;   // restitution of the collision model
   PressureSource pressure_source = PressureSource::Standard;

@@ -134,7 +134,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
                {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
-                "surface_threshold", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
+                "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
@@ -144,6 +144,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "dt_max", {0.0, 1.0, true, false}, n.dt_max);
   rd.number(nm, np, "dt_min", {0.0, n.dt_max, true, true, "numerics.dt_max"}, n.dt_min);
   rd.number(nm, np, "surface_threshold", {0.0, 1.0, true, true}, n.surface_threshold);
+  rd.number(nm, np, "surface_neighbour_fraction", {0.0, 1.0, false, true}, n.surface_neighbour_fraction);
   rd.number(nm, np, "collision_distance", {0.0, 1.0, false, true}, n.collision_distance);
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)

@@ -20,6 +20,19 @@ double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const
   return n;
 }
 
+// How many neighbours j with include(j) lie within re (the neighbour count; a full lattice has
+// latticeNeighbourCount of enclosed_gas.hpp: 12 in 2D and 32 in 3D for re = 2.1 l0).
+template <int D, class Include>
+int neighbourCountAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+                     Include&& include) {
+  int count = 0;
+  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+    const auto j = nl.indices[s];
+    if (include(j) && (position[j] - position[i]).squaredNorm() < re * re) ++count;
+  }
+  return count;
+}
+
 // Number density counting every neighbour in the list (the list never holds escaped particles).
 template <int D>
 double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re) {

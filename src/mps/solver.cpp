@@ -39,7 +39,8 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
       domain_upper_(firstComponents<D>(config.domain.max)),
       search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian)),
       linear_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
-                                      config.numerics.solver_max_iterations)) {
+                                      config.numerics.solver_max_iterations)),
+      full_neighbour_count_(latticeNeighbourCount(D, constants_.re_number_density, constants_.l0)) {
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
     if (k == ParticleKind::Fluid) phase_present_[static_cast<int>(state_.particles.phase[i])] = true;
@@ -148,6 +149,18 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
                     &state_.particles.enclosed);
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
+}
+
+// The neighbour-count test of numerics.surface_neighbour_fraction for fluid particles (walls always pass):
+// at least that fraction of a full lattice's neighbours within re, counting those with counts[j].
+template <int D>
+bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& counts) const {
+  const double fraction = config_.numerics.surface_neighbour_fraction;
+  const auto& p = state_.particles;
+  if (fraction <= 0.0 || p.kind[i] != ParticleKind::Fluid) return true;
+  auto counted = [&](std::int32_t j) { return counts[j] != 0; };
+  const int count = neighbourCountAt<D>(i, p.position, neighbours_, constants_.re_number_density, counted);
+  return count >= fraction * full_neighbour_count_;
 }
 
 template <int D>
@@ -286,7 +299,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
       group_shift[group_of[i]] += bubble_shift;
       group_guess[group_of[i]] = bubble_pressure_[i];
     } else {
-      problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
+      problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
+                            hasFullNeighbourhood(i, roles_.in_liquid_system);
     }
   }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
@@ -379,6 +393,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       gas_number_density_[i] = numberDensityAt<D>(i, p.position, neighbours_, re, active);
   const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
   const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
+  std::vector<char> active_flags(n);
+  for (std::int64_t i = 0; i < n; ++i) active_flags[i] = isActive(p.kind[i]);
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);
   problem_.carries_velocity.assign(n, 0);
@@ -386,7 +402,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.sound_speed.assign(n, gas.sound_speed);
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
-    problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0;
+    problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0 &&
+                          hasFullNeighbourhood(i, active_flags);
     problem_.carries_velocity[i] = isActive(p.kind[i]);
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's

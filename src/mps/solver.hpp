@@ -74,6 +74,7 @@ class MpsSolver {
 
  private:
   void buildNeighbours();
+  bool hasFullNeighbourhood(std::size_t i, const std::vector<char>& counts) const;
   double chooseTimeStepFor(double until) const;
   void predict(double dt);
   void collide(double dt);
@@ -112,6 +113,7 @@ class MpsSolver {
   Eigen::VectorXd pressure_unknowns_;
   std::unique_ptr<LinearSolver> linear_solver_;
   StepReport report_;
+  int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
 };
 
 }  // namespace mistfall
