@@ -17,13 +17,11 @@ Needs Debian's python3-numpy and python3-matplotlib (installed by `make deps`); 
 """
 import argparse
 import os
-import re
 import struct
 import sys
-import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import PlotError, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
+from plot_frames import PlotError, read_vtk_xml, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
 
 import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
@@ -55,33 +53,7 @@ def _numbers(text, count, what, path):
 def read_vti(path):
     """Returns (grid, arrays): grid = dict(origin, spacing, dims (nx, ny, nz), time or None); arrays = dict
     name -> numpy array of shape (nz, ny, nx) or (nz, ny, nx, components)."""
-    try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as e:
-        raise PlotError(f"cannot read grid {path}: {e.strerror}") from None
-    if not data.rstrip().endswith(b"</VTKFile>"):
-        raise PlotError(f"unreadable grid {path}: missing </VTKFile> (truncated?)")
-    # The raw appended bytes may contain anything, so only the part before <AppendedData> is parsed as XML.
-    marker = data.find(b"<AppendedData")
-    header = data if marker < 0 else data[:marker] + b"</VTKFile>"
-    try:
-        root = ET.fromstring(header)
-    except ET.ParseError as e:
-        raise PlotError(f"unreadable grid {path}: not a VTK XML file ({e})") from None
-    if root.tag != "VTKFile" or root.get("type") != "ImageData" or root.find("ImageData") is None:
-        raise PlotError(f"unreadable grid {path}: not a VTK ImageData file")
-    raw = b""
-    if marker >= 0:
-        ad = re.match(rb"<AppendedData([^>]*)>", data[marker:])
-        if not ad or b'encoding="raw"' not in ad.group(1):
-            raise PlotError(f"unreadable grid {path}: only raw appended data is supported")
-        if root.get("byte_order", "LittleEndian") != "LittleEndian" or root.get("header_type") != "UInt64":
-            raise PlotError(f"unreadable grid {path}: only little-endian files with UInt64 headers are supported")
-        underscore = data.find(b"_", marker + ad.end())
-        if underscore < 0:
-            raise PlotError(f"unreadable grid {path}: appended data has no '_' marker")
-        raw = data[underscore + 1:]
+    root, raw = read_vtk_xml(path, "ImageData", "grid")
     image = root.find("ImageData")
     extent = _numbers(image.get("WholeExtent"), 6, "WholeExtent", path)
     if any(extent[2 * k] != 0 or extent[2 * k + 1] < 0 or extent[2 * k + 1] != int(extent[2 * k + 1])

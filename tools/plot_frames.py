@@ -47,35 +47,43 @@ class Parser(argparse.ArgumentParser):
 
 # ---- reading ----
 
-def read_vtp(path):
-    """Returns (time or None, dict name -> numpy array) for the Points and PointData arrays of one frame."""
+def read_vtk_xml(path, vtk_type, what):
+    """Opens a VTK XML file of type `vtk_type` ("PolyData", "ImageData") as mistfall writes them. Returns (root
+    element of the XML part, raw appended bytes after the '_' marker or b""). `what` names the file in
+    messages ("frame", "grid")."""
     try:
         with open(path, "rb") as f:
             data = f.read()
     except OSError as e:
-        raise PlotError(f"cannot read frame {path}: {e.strerror}") from None
+        raise PlotError(f"cannot read {what} {path}: {e.strerror}") from None
     if not data.rstrip().endswith(b"</VTKFile>"):
-        raise PlotError(f"unreadable frame {path}: missing </VTKFile> (truncated?)")
+        raise PlotError(f"unreadable {what} {path}: missing </VTKFile> (truncated?)")
     # The raw appended bytes may contain anything, so only the part before <AppendedData> is parsed as XML.
     marker = data.find(b"<AppendedData")
     header = data if marker < 0 else data[:marker] + b"</VTKFile>"
     try:
         root = ET.fromstring(header)
     except ET.ParseError as e:
-        raise PlotError(f"unreadable frame {path}: not a VTK XML file ({e})") from None
-    if root.tag != "VTKFile" or root.get("type") != "PolyData":
-        raise PlotError(f"unreadable frame {path}: not a VTK PolyData file")
+        raise PlotError(f"unreadable {what} {path}: not a VTK XML file ({e})") from None
+    if root.tag != "VTKFile" or root.get("type") != vtk_type or root.find(vtk_type) is None:
+        raise PlotError(f"unreadable {what} {path}: not a VTK {vtk_type} file")
     raw = b""
     if marker >= 0:
         ad = re.match(rb"<AppendedData([^>]*)>", data[marker:])
         if not ad or b'encoding="raw"' not in ad.group(1):
-            raise PlotError(f"unreadable frame {path}: only raw appended data is supported")
+            raise PlotError(f"unreadable {what} {path}: only raw appended data is supported")
         if root.get("byte_order", "LittleEndian") != "LittleEndian" or root.get("header_type") != "UInt64":
-            raise PlotError(f"unreadable frame {path}: only little-endian files with UInt64 headers are supported")
+            raise PlotError(f"unreadable {what} {path}: only little-endian files with UInt64 headers are supported")
         underscore = data.find(b"_", marker + ad.end())
         if underscore < 0:
-            raise PlotError(f"unreadable frame {path}: appended data has no '_' marker")
+            raise PlotError(f"unreadable {what} {path}: appended data has no '_' marker")
         raw = data[underscore + 1:]
+    return root, raw
+
+
+def read_vtp(path):
+    """Returns (time or None, dict name -> numpy array) for the Points and PointData arrays of one frame."""
+    root, raw = read_vtk_xml(path, "PolyData", "frame")
     piece = root.find("./PolyData/Piece")
     try:
         n = int(piece.get("NumberOfPoints"))
