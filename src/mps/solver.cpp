@@ -79,7 +79,6 @@ const StepReport& MpsSolver<D>::step(double until) {
     roles_.extendForLiquid(n);
     regions_.region_of.resize(n, -1);
     regions_.enclosed_particle.resize(n, 0);
-    bubble_pressure_.resize(n, 0.0);
   }
   buildNeighbours();
   // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
@@ -124,15 +123,6 @@ void MpsSolver<D>::findBubbles() {
   }
   assignCouplingRoles<D>(state_.particles, regions_, roles_,
                          static_cast<std::size_t>(config_.numerics.bubble_min_particles));
-  // Each bubble's pressure for the liquid system: the mean of its particles' gas-system pressures so far.
-  const auto& p = state_.particles;
-  bubble_pressure_.assign(p.size(), 0.0);
-  std::vector<double> sum(regions_.regionCount(), 0.0);
-  std::vector<std::size_t> count(regions_.regionCount(), 0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (roles_.enclosed_gas[i]) sum[regions_.region_of[i]] += p.pressure[i], ++count[regions_.region_of[i]];
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (roles_.enclosed_gas[i]) bubble_pressure_[i] = sum[regions_.region_of[i]] / count[regions_.region_of[i]];
 }
 
 template <int D>
@@ -283,9 +273,10 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   problem_.carries_velocity = roles_.in_liquid_system;
   problem_.density = liquid.density;
   problem_.sound_speed.assign(n, liquid.sound_speed);
-  std::vector<std::int32_t> group_of(n, -1);
-  std::vector<double> group_shift(regions_.regionCount(), 0.0);
-  std::vector<double> group_guess(regions_.regionCount(), 0.0);
+  // One group (merged unknown) per bubble, numbered in region order; its initial guess is the bubble's pressure
+  // from the last step (its particles all hold it).
+  std::vector<std::int32_t> group_of(n, -1), group_of_region(regions_.regionCount(), -1);
+  std::vector<double> group_shift, group_guess;
   const double bubble_shift = std::isfinite(gas.sound_speed)
                                   ? liquid.density / (gas.density * dt * dt * gas.sound_speed * gas.sound_speed)
                                   : 0.0;
@@ -295,9 +286,14 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     if (roles_.enclosed_gas[i]) {
       problem_.unknown[i] = 1;
       problem_.sound_speed[i] = std::numeric_limits<double>::infinity();
-      group_of[i] = regions_.region_of[i];
-      group_shift[group_of[i]] += bubble_shift;
-      group_guess[group_of[i]] = bubble_pressure_[i];
+      auto& group = group_of_region[regions_.region_of[i]];
+      if (group < 0) {
+        group = static_cast<std::int32_t>(group_shift.size());
+        group_shift.push_back(0.0);
+        group_guess.push_back(p.pressure[i]);
+      }
+      group_of[i] = group;
+      group_shift[group] += bubble_shift;
     } else {
       problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
                             hasFullNeighbourhood(i, roles_.in_liquid_system);
@@ -376,9 +372,9 @@ void MpsSolver<D>::correctLiquid(double dt) {
 }
 
 // The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
-// particle within re of gas (at the liquid's corrected positions). n* counts every particle. Gas pressures are
-// kept as solved: a bubble below its rest volume's pressure pulls the liquid in (open gas next to the liquid's
-// free surface is clamped at 0 like a free surface).
+// particle within re of gas (at the liquid's corrected positions). n* counts every particle. Open gas pressures
+// are clamped at 0 like a free surface; a bubble's are kept as solved, since only their gradient is used (to
+// re-space its gas; the bubble's own pressure P_B comes from the liquid system).
 template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
@@ -416,8 +412,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
   report_.gas_ppe_unknowns = system_.particle_of.size();
   gas_pressure_.assign(n, 0.0);
-  for (std::size_t r = 0; r < system_.particle_of.size(); ++r)
-  {
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
     gas_pressure_[i] = roles_.enclosed_gas[i] ? pressure_unknowns_[r] : std::max(0.0, pressure_unknowns_[r]);
   }

@@ -107,7 +107,6 @@ class MpsSolver {
   PressureProblem problem_;
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
-  std::vector<double> bubble_pressure_;     // per enclosed gas particle: its bubble's mean gas pressure
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;
