@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# ctest tools.overfall_profile: tools/overfall_profile.py measures the brink depth and the nappe of a 2D run.
+# A run directory made by hand: two rows of water particles (l0 = 1 cm, so a 2 cm deep channel by the tool's
+# count, depth = N l0^2 / window) moving at (U, V) = (0.7, -0.1) m/s up to the brink, a sheet of particles on the
+# ballistic path of a point leaving the brink's mid-depth with that velocity (three per level and one stray drop
+# far off, which the median must ignore), and a pool. The tool must find the 2 cm depth, the velocity, and the
+# sheet on that path (RMS under 2 mm); bad input exits 1 with a message.
+# Usage: test_overfall_profile.sh SOURCE_DIR
+set -euo pipefail
+source_dir=$1
+py=/usr/bin/python3
+tool="$source_dir/tools/overfall_profile.py"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run="$work/run"
+mkdir -p "$run/frames"
+
+"$py" - "$run" <<'PY'
+import math, os, sys
+run = sys.argv[1]
+l0, g, u, v = 0.01, 9.81, 0.7, -0.1
+x_brink, y_bed, pool = 0.30, 0.435, 0.11
+with open(os.path.join(run, "case.toml"), "w") as f:
+    f.write(f"""[case]
+name = "overfall_test"
+dimension = 2
+[physics]
+gravity = [0.0, -{g}]
+[numerics]
+particle_spacing = {l0}
+[[region]]
+name = "channel_bed"
+material = "wall"
+min = [0.0, 0.395]
+max = [{x_brink}, {y_bed}]
+[[region]]
+name = "weir"
+material = "wall"
+min = [1.0, 0.0]
+max = [1.04, {pool}]
+[[inflow]]
+name = "upstream"
+min = [0.0, {y_bed}]
+max = [0.04, 0.485]
+direction = [1, 0]
+discharge = 0.016
+""")
+pts = []                                  # (x, y, kind, phase)
+for i in range(10):                       # the channel's last 10 cm: 2 rows
+    for j in range(2):
+        pts.append((x_brink - 0.095 + i * l0, y_bed + 0.5 * l0 + j * l0, 0, 0))
+y0 = y_bed + 0.01                         # mid-depth of the 2 cm deep brink
+level = y_bed - l0
+while level > 0.2:
+    t = (v + math.sqrt(v * v + 2 * g * (y0 - level))) / g
+    x = x_brink + u * t
+    pts += [(x - 0.002, level, 0, 0), (x, level, 0, 0), (x + 0.002, level, 0, 0), (x + 0.25, level, 0, 0)]
+    level -= l0
+for i in range(60):                       # pool and a wall row
+    pts += [(0.005 + i * l0, 0.105, 0, 0), (0.005 + i * l0, -0.005, 1, 0), (0.005 + i * l0, 0.3, 0, 1)]
+n = len(pts)
+def arr(name, typ, comps, values):
+    return (f'<DataArray type="{typ}" Name="{name}" NumberOfComponents="{comps}" format="ascii">'
+            + " ".join(str(x) for x in values) + "</DataArray>\n")
+body = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">\n<PolyData>\n'
+        '<FieldData>' + arr("TIME", "Float64", 1, [0.5]) + '</FieldData>\n'
+        f'<Piece NumberOfPoints="{n}" NumberOfVerts="0">\n<Points>'
+        + arr("Points", "Float64", 3, [c for p in pts for c in (p[0], p[1], 0.0)]) + '</Points>\n<PointData>\n'
+        + arr("kind", "UInt8", 1, [p[2] for p in pts]) + arr("phase", "UInt8", 1, [p[3] for p in pts])
+        + arr("velocity", "Float64", 3, [c for p in pts for c in (u, v, 0.0)])
+        + arr("pressure", "Float64", 1, [0.0] * n)
+        + '</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+with open(os.path.join(run, "frames", "frame_00000.vtp"), "w") as f:
+    f.write(body)
+with open(os.path.join(run, "frames.pvd"), "w") as f:
+    f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n<Collection>\n'
+            '<DataSet timestep="0.5" group="" part="0" file="frames/frame_00000.vtp"/>\n</Collection>\n</VTKFile>\n')
+PY
+
+out=$("$py" "$tool" "$run")
+echo "$out"
+"$py" - "$out" <<'PY'
+import re, sys
+out = sys.argv[1]
+depth = float(re.search(r"brink depth\s+measured ([0-9.]+) cm", out).group(1))
+u, v = (float(s) for s in re.search(r"measured U = ([-0-9.]+) m/s, V = ([-0-9.]+) m/s", out).groups())
+rms = float(re.search(r"from the measured brink ([0-9.]+) cm", out).group(1))
+ratio = float(re.search(r"measured/critical = ([0-9.]+)", out).group(1))
+assert abs(depth - 2.0) < 1e-9, depth
+assert abs(u - 0.7) < 1e-9 and abs(v + 0.1) < 1e-9, (u, v)
+assert abs(ratio - 2.0 / 2.967) < 0.002, ratio      # h_c = (0.016^2 / 9.81)^(1/3) = 2.967 cm
+assert rms < 0.2, rms
+print("overfall_profile: depth, velocity and nappe recovered")
+PY
+test -s "$run/plots/overfall.png"
+test -s "$run/plots/overfall.csv"
+
+# Bad input: a missing run, a run without a brink region.
+if "$py" "$tool" "$work/missing" 2>"$work/err"; then echo "missing run accepted"; exit 1; fi
+grep -q "overfall_profile:" "$work/err"
+if "$py" "$tool" "$run" --bed-region nothere 2>"$work/err"; then echo "bad region accepted"; exit 1; fi
+grep -q "no \[\[region\]\] named 'nothere'" "$work/err"
+echo "tools.overfall_profile: ok"

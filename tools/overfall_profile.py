@@ -1,0 +1,176 @@
+#!/usr/bin/python3
+"""Measure the free overfall of a 2D mistfall waterfall run against the classical results (issue 4).
+
+Brink depth: the water over the last `--window` metres of the channel bed before its edge (the brink),
+h_b = (liquid particles there) * l0^2 / window, averaged over the frames from --from to --to. Compared with the
+critical depth h_c = (q^2/g)^(1/3) and with Rouse's (1936) brink depth for a free overfall, h_b = 0.715 h_c.
+Nappe: for levels y from one l0 under the brink down to --sheet-bottom, the median x of the liquid downstream of
+the brink in a slab of height l0, pooled over the same frames (the median ignores stray drops; the splash near the
+pool is left out by stopping above it). Compared
+with the ballistic path of a point leaving the brink's mid-depth y0 = bed + h_b/2 with the measured mean brink
+velocity (U, V): x = x_b + U t, y = y0 + V t - g t^2 / 2, and with the path from Rouse's brink (U = q / h_b, V = 0).
+
+The case file copy RUN_DIR/case.toml gives l0, g, q (the sum of the [[inflow]] discharges) and the brink: the
+upper downstream corner of the wall region named by --bed-region (default channel_bed). The pool level (the end
+of the sheet) is --pool-y, by default the crest of the region named weir; the sheet is measured down to
+--sheet-bottom, by default the pool level plus 35 % of the drop from the bed (above the splash).
+Writes RUN_DIR/plots/overfall.png (the sheet of the last frame used, the measured and ballistic paths) and
+RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse), and
+prints a summary. Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
+Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /usr/bin/python3.
+"""
+import argparse
+import os
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_frames import PlotError, read_pvd, read_vtp, save, KIND_FLUID  # noqa: E402
+
+import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
+
+ROUSE_BRINK_RATIO = 0.715  # h_b / h_c for a free overfall from a horizontal channel (Rouse 1936)
+
+
+def region_box(doc, name):
+    for region in doc.get("region", []):
+        if region.get("name") == name:
+            return np.array(region["min"], float), np.array(region["max"], float)
+    raise PlotError(f"case.toml has no [[region]] named '{name}'")
+
+
+def read_overfall_case(run_dir, bed_region, pool_y):
+    path = os.path.join(run_dir, "case.toml")
+    try:
+        with open(path, "rb") as f:
+            doc = tomllib.load(f)
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        raise PlotError(f"cannot read {path}: {e}") from None
+    if doc.get("case", {}).get("dimension", 2) != 2:
+        raise PlotError("overfall_profile measures 2D runs only")
+    spacing = doc.get("numerics", {}).get("particle_spacing")
+    if not isinstance(spacing, (int, float)) or spacing <= 0:
+        raise PlotError(f"{path}: [numerics] particle_spacing is missing")
+    gravity = doc.get("physics", {}).get("gravity", [0.0, -9.81])
+    q = sum(float(inflow.get("discharge", 0.0)) for inflow in doc.get("inflow", []))
+    if q <= 0:
+        raise PlotError(f"{path}: no [[inflow]] with a discharge > 0 (the overfall needs q)")
+    _, bed_max = region_box(doc, bed_region)
+    if pool_y is None:
+        _, weir_max = region_box(doc, "weir")
+        pool_y = float(weir_max[1])
+    return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
+        self.print_usage(sys.stderr)
+        print(f"overfall_profile: {message}", file=sys.stderr)
+        sys.exit(1)
+
+
+def main():
+    ap = Parser(description=__doc__.split("\n")[0])
+    ap.add_argument("run_dir")
+    ap.add_argument("--from", dest="t_from", type=float, default=None,
+                    help="first frame time averaged (s; default: half the last frame's time)")
+    ap.add_argument("--to", dest="t_to", type=float, default=None, help="last frame time averaged (s; default: last)")
+    ap.add_argument("--window", type=float, default=None, help="length of the brink window (m; default 2 l0)")
+    ap.add_argument("--bed-region", default="channel_bed", help="wall region whose upper downstream corner is the brink")
+    ap.add_argument("--pool-y", type=float, default=None, help="pool level (m; default: the crest of region 'weir')")
+    ap.add_argument("--sheet-bottom", type=float, default=None,
+                    help="lowest level of the sheet measured (m; default: pool level + 0.35 x drop)")
+    args = ap.parse_args()
+    try:
+        run(args)
+    except PlotError as e:
+        print(f"overfall_profile: {e}", file=sys.stderr)
+        sys.exit(1)
+
+
+def run(args):
+    l0, g, q, x_brink, y_bed, pool_y = read_overfall_case(args.run_dir, args.bed_region, args.pool_y)
+    window = args.window or 2.0 * l0
+    frames = read_pvd(args.run_dir)
+    t_last = frames[-1][0]
+    t_from = args.t_from if args.t_from is not None else 0.5 * t_last
+    t_to = args.t_to if args.t_to is not None else t_last
+    chosen = [(t, path) for t, path in frames if t_from - 1e-9 <= t <= t_to + 1e-9]
+    if not chosen:
+        raise PlotError(f"no frame between t = {t_from} and {t_to} s")
+    bottom = args.sheet_bottom if args.sheet_bottom is not None else pool_y + 0.35 * (y_bed - pool_y)
+    if not pool_y < bottom < y_bed - l0:
+        raise PlotError(f"--sheet-bottom {bottom} must lie between the pool level {pool_y} and the bed {y_bed} less l0")
+    levels = np.arange(y_bed - l0, bottom - 1e-9, -l0)
+    depth, u_mean, v_mean = [], [], []
+    slab_x = [[] for _ in levels]
+    for _, path in chosen:
+        _, a = read_vtp(path)
+        liquid = (a["kind"] == KIND_FLUID) & (a["phase"] == 0)
+        x, y = a["Points"][liquid, 0], a["Points"][liquid, 1]
+        vel = a["velocity"][liquid]
+        at_brink = (x > x_brink - window) & (x <= x_brink) & (y > y_bed)
+        depth.append(at_brink.sum() * l0 * l0 / window)
+        if at_brink.any():
+            u_mean.append(vel[at_brink, 0].mean())
+            v_mean.append(vel[at_brink, 1].mean())
+        sheet = x > x_brink
+        for k, level in enumerate(levels):
+            slab_x[k].extend(x[sheet & (np.abs(y - level) < 0.5 * l0)])
+    if not u_mean:
+        raise PlotError("no water at the brink in the frames chosen")
+    h_b, u_b, v_b = float(np.mean(depth)), float(np.mean(u_mean)), float(np.mean(v_mean))
+    h_c = (q * q / g) ** (1.0 / 3.0)
+    h_rouse = ROUSE_BRINK_RATIO * h_c
+
+    def ballistic_x(y0, u, v, level):  # the later root of y0 + v t - g t^2 / 2 = level
+        t = (v + np.sqrt(v * v + 2.0 * g * (y0 - level))) / g
+        return x_brink + u * t
+
+    measured = np.array([np.median(xs) if xs else np.nan for xs in slab_x])
+    from_brink = ballistic_x(y_bed + 0.5 * h_b, u_b, v_b, levels)
+    from_rouse = ballistic_x(y_bed + 0.5 * h_rouse, q / h_rouse, 0.0, levels)
+    valid = ~np.isnan(measured)
+    rms_brink = float(np.sqrt(np.nanmean((measured - from_brink) ** 2))) if valid.any() else float("nan")
+    rms_rouse = float(np.sqrt(np.nanmean((measured - from_rouse) ** 2))) if valid.any() else float("nan")
+
+    out_dir = os.path.join(args.run_dir, "plots")
+    os.makedirs(out_dir, exist_ok=True)
+    csv_path = os.path.join(out_dir, "overfall.csv")
+    with open(csv_path + ".tmp", "w") as f:
+        f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse\n")
+        for k, level in enumerate(levels):
+            f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f}\n")
+    os.replace(csv_path + ".tmp", csv_path)
+
+    _, a = read_vtp(chosen[-1][1])
+    liquid = (a["kind"] == KIND_FLUID) & (a["phase"] == 0)
+    fig, ax = plt.subplots(figsize=(6, 6))
+    ax.scatter(a["Points"][liquid, 0], a["Points"][liquid, 1], s=6, c="lightsteelblue", label="water (last frame)")
+    ax.plot(measured, levels, "o-", c="navy", ms=3, label="sheet, median x (measured)")
+    ax.plot(from_brink, levels, "--", c="crimson", label=f"ballistic, measured brink (U={u_b:.2f}, V={v_b:.2f} m/s)")
+    ax.plot(from_rouse, levels, ":", c="darkgreen", label=f"ballistic, Rouse brink (U={q / h_rouse:.2f} m/s)")
+    ax.set_xlim(x_brink - 0.15, x_brink + 0.3)
+    ax.set_ylim(pool_y - 0.05, y_bed + 0.08)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_title(f"free overfall, t = {chosen[0][0]:.2f}-{chosen[-1][0]:.2f} s ({len(chosen)} frames)")
+    ax.legend(fontsize=7, loc="upper right")
+    png = os.path.join(out_dir, "overfall.png")
+    save(fig, png, 110)
+    plt.close(fig)
+
+    print(f"frames averaged: {len(chosen)} (t = {chosen[0][0]:.3f} .. {chosen[-1][0]:.3f} s), l0 = {l0} m, q = {q} m^2/s")
+    print(f"brink depth     measured {100 * h_b:.2f} cm (spread {100 * np.std(depth):.2f} cm)")
+    print(f"critical depth  (q^2/g)^(1/3) = {100 * h_c:.2f} cm; measured/critical = {h_b / h_c:.3f} "
+          f"(Rouse: {ROUSE_BRINK_RATIO})")
+    print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
+    print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
+          f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
+    print(f"wrote {png} and {csv_path}")
+
+
+if __name__ == "__main__":
+    main()
