@@ -74,6 +74,14 @@ const PhaseProperties& phaseProperties(const PhysicsConfig& physics, int phase_i
 enum class PressureSolverKind { EigenIccg, HypreAmg };
 // Source term of the PPE. Standard: eq. (9), -rho/dt^2 (n* - n0)/n0 (the paper's original MPS).
 // Mixed (Tanaka & Masunaga 2010): rho/dt div u* - gamma rho/dt^2 (n* - n0)/n0, far less pressure noise.
+// The space the gas fills. Open: it borders open space (a domain open at the top), so gas with a low number density
+// or too few neighbours is a free surface (p = 0) and negative gas pressures are set to 0, like the liquid's.
+// Closed: the gas fills a closed box; every gas particle and the walls and liquid around it carry a pressure
+// unknown (no free surface), and gas pressures may fall below the ambient: eq. (17)'s compressibility fixes their
+// level. A void in closed gas then draws the gas in gently instead of being a free surface that the surrounding
+// pressure accelerates the gas into at 1/rho_g (docs/waterfall.md).
+enum class GasDomain { Open, Closed };
+
 enum class PressureSource { Standard, Mixed };
 
 struct NumericsConfig {
@@ -96,6 +104,7 @@ struct NumericsConfig {
   int solver_max_iterations = 1000;
   double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
   int bubble_min_particles = 6;         // smaller gas regions inside the liquid move as liquid (docs/two-phase.md)
+  GasDomain gas_domain = GasDomain::Open;
 };
 
 struct OutputConfig {

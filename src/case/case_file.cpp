@@ -135,7 +135,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.checkKeys(nm, np,
                {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
-                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles"});
+                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
+                "gas_domain"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   rd.number(nm, np, "radius_number_density", {1.5, 5.0, false, false}, n.radius_number_density);
@@ -156,6 +157,11 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.integer(nm, np, "solver_max_iterations", 1, 100000, "[1, 100000]", n.solver_max_iterations);
   rd.number(nm, np, "max_escaped_fraction", {0.0, 1.0, true, false}, n.max_escaped_fraction);
   rd.integer(nm, np, "bubble_min_particles", 1, 1000000, "[1, 1000000]", n.bubble_min_particles);
+  if (int s = rd.choice(nm, np, "gas_domain", {"open", "closed"}); s >= 0)
+    n.gas_domain = s == 0 ? GasDomain::Open : GasDomain::Closed;
+  if (n.gas_domain == GasDomain::Closed && !std::isfinite(c.physics.gas.sound_speed))
+    rd.fail("numerics.gas_domain = \"closed\" needs a finite physics.gas.sound_speed (a closed incompressible gas "
+            "has no pressure level); allowed \"open\", or a sound speed > 0");
   for (int k = 0; k < dim; ++k) {
     const double cells = (c.domain.max[k] - c.domain.min[k]) / n.particle_spacing;
     if (!(cells <= static_cast<double>(kMaxLatticeIndex)))

@@ -322,9 +322,10 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
 
 // Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
 // gradient (without them the min-pressure term pushes that fluid into the wall). Each takes the pressure of its
-// nearest wall particle, extrapolated hydrostatically: p_d = p_w + rho g . (r_d - r_w), clamped at 0.
+// nearest wall particle, extrapolated hydrostatically: p_d = p_w + rho g . (r_d - r_w), clamped at 0 when `clamp`
+// (gas in a closed box may be below the ambient: numerics.gas_domain).
 template <int D>
-void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, double rho) const {
+void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, double rho, bool clamp) const {
   const auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
 #pragma omp parallel for schedule(static)
@@ -338,9 +339,9 @@ void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, doubl
       const double r2 = (p.position[j] - p.position[i]).squaredNorm();
       if (r2 < best) best = r2, nearest = j;
     }
-    pressure[i] =
-        nearest < 0 ? 0.0
-                    : std::max(0.0, pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]));
+    const double extrapolated =
+        nearest < 0 ? 0.0 : pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]);
+    pressure[i] = clamp ? std::max(0.0, extrapolated) : extrapolated;
   }
 }
 
@@ -372,9 +373,11 @@ void MpsSolver<D>::correctLiquid(double dt) {
 }
 
 // The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
-// particle within re of gas (at the liquid's corrected positions). n* counts every particle. Open gas pressures
-// are clamped at 0 like a free surface; a bubble's are kept as solved, since only their gradient is used (to
-// re-space its gas; the bubble's own pressure P_B comes from the liquid system).
+// particle within re of gas (at the liquid's corrected positions). n* counts every particle. With
+// numerics.gas_domain = "open" the gas has free-surface particles (p = 0) and open gas pressures are clamped at 0;
+// with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
+// pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
+// P_B comes from the liquid system).
 template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
@@ -396,10 +399,11 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.carries_velocity.assign(n, 0);
   problem_.density = gas.density;
   problem_.sound_speed.assign(n, gas.sound_speed);
+  const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
-    problem_.unknown[i] = problem_.takes_part[i] && gas_number_density_[i] >= beta_n0 &&
-                          hasFullNeighbourhood(i, active_flags);
+    problem_.unknown[i] = problem_.takes_part[i] &&
+                          (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
     problem_.carries_velocity[i] = isActive(p.kind[i]);
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
@@ -414,9 +418,9 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   gas_pressure_.assign(n, 0.0);
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
-    gas_pressure_[i] = roles_.enclosed_gas[i] ? pressure_unknowns_[r] : std::max(0.0, pressure_unknowns_[r]);
+    gas_pressure_[i] = (roles_.enclosed_gas[i] || closed) ? pressure_unknowns_[r] : std::max(0.0, pressure_unknowns_[r]);
   }
-  extrapolateDummyPressure(gas_pressure_, gas.density);
+  extrapolateDummyPressure(gas_pressure_, gas.density, !closed);
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.open_gas[i]) continue;
     p.pressure[i] = gas_pressure_[i];

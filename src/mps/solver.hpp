@@ -81,7 +81,7 @@ class MpsSolver {
   void findBubbles();
   void computeLiquidNumberDensity();
   void solveLiquidPressure(double dt);
-  void extrapolateDummyPressure(std::vector<double>& pressure, double density) const;
+  void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
   void correctLiquid(double dt);
   void solveGasPressure(double dt);
   void correctGas(double dt);

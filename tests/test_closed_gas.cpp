@@ -1,0 +1,166 @@
+// Gas in a closed box (numerics.gas_domain = "closed", docs/waterfall.md): every particle of the gas system carries
+// a pressure unknown and gas pressures may fall below the ambient, their level fixed by eq. (17)'s compressibility.
+// Still air in a closed box must be hydrostatic (dp/dy = -rho_g g) and stay still; a void in the air must draw the
+// gas in by suction (negative pressure, which free-surface gas never has) and close no faster than a free fall.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "mps/enclosed_gas.hpp"
+#include "mps/solver.hpp"
+
+using namespace mistfall;
+
+namespace {
+
+// A closed 2D box 0.1 m x 0.1 m (l0 = 5 mm, walls all round): a 2 cm layer of water under air, optionally with a
+// void in the air: a band 1 cm high at y = 0.045-0.055 m left empty.
+std::string airBoxCase(const std::string& gas_domain, bool void_band) {
+  std::string text = R"(
+[case]
+name = "closed_air"
+dimension = 2
+[domain]
+min = [-0.02, -0.02]
+max = [0.12, 0.12]
+[numerics]
+particle_spacing = 0.005
+dt_max = 5e-4
+pressure_source = "mixed"
+source_relaxation = 0.01
+gas_domain = ")" + gas_domain + R"("
+[output]
+end_time = 1.0
+)";
+  if (void_band)
+    text += "[[region]]\nname = \"low\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.045]\n"
+            "[[region]]\nname = \"high\"\nmaterial = \"gas\"\nmin = [0.0, 0.055]\nmax = [0.1, 0.1]\n";
+  else
+    text += "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.1]\n";
+  text += "[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.02]\n";
+  text += R"(
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.12, 0.0]
+[[region]]
+name = "lid"
+material = "wall"
+min = [-0.02, 0.1]
+max = [0.12, 0.12]
+[[region]]
+name = "left"
+material = "wall"
+min = [-0.02, 0.0]
+max = [0.0, 0.1]
+[[region]]
+name = "right"
+material = "wall"
+min = [0.1, 0.0]
+max = [0.12, 0.1]
+)";
+  return text;
+}
+
+struct AirBox {
+  CaseConfig config;
+  SimulationState<2> state;
+  std::unique_ptr<MpsSolver<2>> solver;
+  explicit AirBox(const std::string& text) : config(parseCase(text, "closed_air.toml")) {
+    state.particles = buildParticles<2>(config);
+    solver = std::make_unique<MpsSolver<2>>(config, state);
+  }
+  double maxGasSpeed() const {
+    const auto& p = state.particles;
+    double v = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (isGas(p.kind[i], p.phase[i])) v = std::max(v, p.velocity[i].norm());
+    return v;
+  }
+  double minGasPressure() const {
+    const auto& p = state.particles;
+    double m = 1e300;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (isGas(p.kind[i], p.phase[i])) m = std::min(m, p.pressure[i]);
+    return m;
+  }
+};
+
+}  // namespace
+
+TEST(ClosedGas, CaseFileKeyAndItsLimits) {
+  EXPECT_EQ(parseCase(airBoxCase("closed", false), "a.toml").numerics.gas_domain, GasDomain::Closed);
+  EXPECT_EQ(parseCase(airBoxCase("open", false), "a.toml").numerics.gas_domain, GasDomain::Open);
+  try {
+    parseCase(airBoxCase("sealed", false), "a.toml");
+    FAIL() << "gas_domain = \"sealed\" accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("numerics.gas_domain"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"closed\""), std::string::npos) << e.what();
+  }
+  std::string incompressible = airBoxCase("closed", false);
+  incompressible.replace(incompressible.find("[numerics]"), 10, "[physics.gas]\nsound_speed = \"inf\"\n[numerics]");
+  try {
+    parseCase(incompressible, "a.toml");
+    FAIL() << "closed incompressible gas accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("physics.gas.sound_speed"), std::string::npos) << e.what();
+  }
+}
+
+// Still air in a closed box: the pressure falls with height as rho_g g (the box is 0.1 m high: about 1.2 Pa top to
+// bottom) and the air stays still.
+TEST(ClosedGas, StillAirIsHydrostatic) {
+  AirBox box(airBoxCase("closed", false));
+  for (int step = 0; step < 60; ++step) box.solver->step(1.0);
+  const auto& p = box.state.particles;
+  // Least-squares slope of p against y over the gas.
+  double sy = 0, sp = 0, syy = 0, syp = 0, count = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isGas(p.kind[i], p.phase[i])) continue;
+    const double y = p.position[i][1];
+    sy += y, sp += p.pressure[i], syy += y * y, syp += y * p.pressure[i], count += 1;
+  }
+  const double slope = (count * syp - sy * sp) / (count * syy - sy * sy);
+  const double expected = -box.config.physics.gas.density * 9.81;
+  EXPECT_NEAR(slope, expected, 0.1 * std::abs(expected)) << "dp/dy of the still air";
+  EXPECT_LT(box.maxGasSpeed(), 0.01) << "still air in a closed box";
+}
+
+// A 1 cm void across the box: in a closed box the gas around it is at suction (negative gauge pressure; free-surface
+// gas never is), the void closes, and no gas moves faster than a free fall across the void, sqrt(2 g h).
+TEST(ClosedGas, VoidDrawsTheGasInGently) {
+  AirBox closed(airBoxCase("closed", true));
+  AirBox open(airBoxCase("open", true));
+  closed.solver->step(1.0);
+  EXPECT_LT(closed.minGasPressure(), 0.0) << "suction at the void";
+  EXPECT_GE(open.minGasPressure(), 0.0);
+  double closed_speed = closed.maxGasSpeed(), open_speed = open.maxGasSpeed();
+  for (int step = 1; step < 100; ++step) {
+    closed.solver->step(1.0);
+    open.solver->step(1.0);
+    closed_speed = std::max(closed_speed, closed.maxGasSpeed());
+    open_speed = std::max(open_speed, open.maxGasSpeed());
+  }
+  std::printf("void closing: max gas speed closed %.4f m/s, open %.4f m/s\n", closed_speed, open_speed);
+  EXPECT_LT(closed_speed, std::sqrt(2.0 * 9.81 * 0.01));
+  // The void has closed: no gas particle inside the box is short of neighbours any more.
+  const auto& p = closed.state.particles;
+  const auto& nl = closed.solver->currentNeighbours();
+  const double re = closed.solver->constants().re_number_density;
+  std::size_t short_of_neighbours = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isGas(p.kind[i], p.phase[i])) continue;
+    int count = 0;
+    for (auto s = nl.begin(i); s < nl.end(i); ++s)
+      count += (p.position[nl.indices[s]] - p.position[i]).norm() < re;
+    short_of_neighbours += count < 9;  // 12 in a full lattice at re = 2.1 l0
+  }
+  EXPECT_EQ(short_of_neighbours, 0u);
+}
