@@ -10,6 +10,7 @@
 
 #include "classify/classification.hpp"
 #include "mps/number_density.hpp"
+#include "support/lattice.hpp"
 
 using namespace mistfall;
 
@@ -36,16 +37,9 @@ template <int D, class Keep>
 std::size_t addBoxWhere(Particles<D>& p, const Index<D>& lo, const Index<D>& hi, ParticleKind kind, Phase phase,
                    Keep&& keep, double spacing = kL0) {
   const std::size_t first = p.size();
-  Index<D> k = lo;
-  while (true) {
+  test_support::forEachLatticePoint<D>(lo, hi, [&](const Index<D>& k) {
     if (keep(k)) p.add(at<D>(k, spacing), Vec<D>::Zero(), kind, phase);
-    int a = 0;
-    for (; a < D; ++a) {
-      if (++k[a] <= hi[a]) break;
-      k[a] = lo[a];
-    }
-    if (a == D) break;
-  }
+  });
   return first;
 }
 

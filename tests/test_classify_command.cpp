@@ -3,8 +3,6 @@
 // ascii frames, the same categories as `simulate` writes inline, the [classify] table, and clear errors.
 // Also the frame-count progress line and the category array's round trip through the VTK writer.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,11 +15,15 @@
 #include "cli/simulate.hpp"
 #include "io/vtk_writer.hpp"
 #include "support/case_text.hpp"
+#include "support/cli.hpp"
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
+using test_support::CliResult;
 using test_support::freshDir;
+using test_support::quoted;
+using test_support::runCli;
 using test_support::slurp;
 
 namespace {
@@ -69,26 +71,6 @@ max = [0.23, 0.2]
 )";
 }
 
-struct CliResult {
-  int code = -1;
-  std::string err;
-};
-
-// Runs the real `mistfall` executable with `args` (already shell-quoted).
-CliResult runCli(const std::string& args) {
-  static int counter = 0;
-  const fs::path err = test_support::scratchRoot() / ("classify_stderr_" + std::to_string(counter++) + ".txt");
-  fs::create_directories(err.parent_path());
-  const std::string cmd =
-      std::string("'") + MISTFALL_BINARY + "' " + args + " >/dev/null 2>'" + err.string() + "' </dev/null";
-  const int status = std::system(cmd.c_str());
-  CliResult r;
-  r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  r.err = slurp(err);
-  return r;
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // Simulates the two-phase case to 0.02 s (3 frames) into dir/run.
 fs::path simulateTinyRun(const fs::path& dir, bool ascii = false, const std::string& classify_table = "") {
