@@ -1,7 +1,8 @@
 // `mistfall classify RUN_DIR`: the six-category classification (src/classify, section 3.1) of every frame of a run.
 // Reads RUN_DIR/case.toml (the copy `simulate` keeps) and each RUN_DIR/frames/frame_NNNNN.vtp, and rewrites each
 // frame with a `category` point array (UInt8: 1 liquid bulk, 2 liquid surface, 3 droplet, 4 gas bulk, 5 gas
-// surface, 6 bubble, 0 not fluid), in the frame's own format (binary or ascii), every other array unchanged.
+// surface, 6 bubble, 0 not fluid), in the frame's own format (binary or ascii), the arrays `simulate` writes kept
+// bit for bit (readVtp/writeVtp round-trip them exactly).
 // Each frame is replaced atomically; RUN_DIR/categories.csv (one row per frame: frame, time and the six counts) is
 // written when every frame is done. Running it again gives the same files.
 #pragma once

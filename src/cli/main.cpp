@@ -35,9 +35,9 @@ int main(int argc, char** argv) {
       "dummies, escaped and inflow particles. Liquid and gas are classified separately from the number density of\n"
       "their own particles (plus walls) and its gradient; the thresholds are the case's [classify] table\n"
       "(docs/case-file.md), read from RUN_DIR/case.toml. Each RUN_DIR/frames/frame_NNNNN.vtp is rewritten in place\n"
-      "(atomically, same format, other arrays unchanged); RUN_DIR/categories.csv gets one row per frame (frame,\n"
-      "time, the six counts). Running it again gives the same files. Frames written by `simulate` already carry\n"
-      "the array; run classify after changing [classify] in RUN_DIR/case.toml.\n"
+      "(atomically, same format, the arrays simulate writes kept bit for bit); RUN_DIR/categories.csv gets one\n"
+      "row per frame (frame, time, the six counts). Running it again gives the same files. Frames written by\n"
+      "`simulate` already carry the array; run classify after changing [classify] in RUN_DIR/case.toml.\n"
       "Exit codes: 0 done, 1 bad input (nothing written), 2 a frame could not be read or written.");
   classify->add_option("run_dir", cls.run_dir, "Run directory written by `mistfall simulate` (holds case.toml and frames/)")
       ->required();
