@@ -335,3 +335,23 @@ TEST(Classification, CategoryNamesAreTheCsvColumns) {
   EXPECT_EQ("gas_surface", categoryName(Category::GasSurface));
   EXPECT_EQ("bubble", categoryName(Category::Bubble));
 }
+
+// The solver's neighbour list reaches the Laplacian radius (3.1 l0); pairs beyond re = 2.1 l0 must not count.
+TYPED_TEST(Classification, LongerNeighbourListGivesTheSameCategories) {
+  constexpr int D = TypeParam::value;
+  Particles<D> p;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.25 * kL0, 0.25 * kL0);
+  addBox<D>(p, filled<D>(0), filled<D>(D == 2 ? 15 : 7), ParticleKind::Fluid, Phase::Liquid);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int a = 0; a < D; ++a) p.position[i][a] += jitter(rng);
+  const MpsConstants c = constantsFor(D);
+  NeighborSearch<D> search(Vec<D>::Constant(-kL0), Vec<D>::Constant(17 * kL0), c.re_laplacian);
+  NeighborList wide;
+  search.build(p.position, p.kind, wide);
+  const auto from_wide = classifyParticles<D>(p, wide, c, {});
+  EXPECT_EQ(categoryBytes(classify<D>(p)), categoryBytes(from_wide));
+  const auto counts = countCategories(from_wide);
+  EXPECT_GT(counts[static_cast<int>(Category::LiquidBulk)], 0u);
+  EXPECT_GT(counts[static_cast<int>(Category::LiquidSurface)], 0u);
+}
