@@ -7,6 +7,7 @@
 #include <random>
 
 #include "mps/enclosed_gas.hpp"
+#include "support/lattice.hpp"
 
 using namespace mistfall;
 
@@ -38,20 +39,13 @@ Vec<D> at(const Index<D>& k) { return origin<D>() + kL0 * k.template cast<double
 template <int D, class Classify>
 Particles<D> makeLattice(const Index<D>& lo, const Index<D>& hi, Classify&& classify) {
   Particles<D> p;
-  Index<D> k = lo;
-  while (true) {
+  test_support::forEachLatticePoint<D>(lo, hi, [&](const Index<D>& k) {
     const Site s = classify(k);
     if (s.present) {
       p.add(at<D>(k), Vec<D>::Zero(), s.kind, s.phase);
       p.pressure.back() = 1000.0 + 37.0 * std::sin(0.1 * p.size());
     }
-    int a = 0;
-    for (; a < D; ++a) {
-      if (++k[a] <= hi[a]) break;
-      k[a] = lo[a];
-    }
-    if (a == D) break;
-  }
+  });
   return p;
 }
 

@@ -4,7 +4,8 @@
 Reads RUN_DIR/frames.pvd and the VTK PolyData frames it lists (binary-appended or ASCII, as
 `mistfall simulate` writes them). 2D runs: an x-y scatter; 3D runs: a side view (x-z) and a top view (x-y)
 side by side. Wall and dummy particles are grey (escaped particles are not drawn); fluid particles are
-coloured by the chosen field. Writes DIR/frame_NNNNN.png (NNNNN = the frame's index in frames.pvd) and,
+coloured by the chosen field (--color category: the six categories of `mistfall classify`, inflow water dark
+grey). Writes DIR/frame_NNNNN.png (NNNNN = the frame's index in frames.pvd) and,
 with --diagnostics, DIR/diagnostics.png (max speed, kinetic energy and PPE iterations against time).
 Images are written to a temporary file and renamed, so none is left half-written.
 Exit codes: 0 done; 1 bad input (bad option, missing directory or file, unreadable frame), with a one-line
@@ -31,7 +32,10 @@ except ImportError as e:  # pragma: no cover
 NUMPY_TYPE = {"Float64": "<f8", "Float32": "<f4", "UInt8": "u1", "Int8": "i1", "Int32": "<i4", "UInt32": "<u4",
               "Int64": "<i8", "UInt64": "<u8"}
 KIND_FLUID, KIND_WALL, KIND_DUMMY, KIND_ESCAPED, KIND_INFLOW = 0, 1, 2, 3, 4  # ParticleKind in src/mps/particles.hpp
-COLOR_FIELDS = ("pressure", "speed", "phase", "kind")
+COLOR_FIELDS = ("pressure", "speed", "phase", "kind", "category")
+# The six-category classification (src/classify/classification.hpp): 1..6; a colour each.
+CATEGORY_LABEL = "category\n1 liquid bulk, 2 liquid surface, 3 droplet\n4 gas bulk, 5 gas surface, 6 bubble"
+CATEGORY_COLOURS = ("#1f4e9c", "#5fa8e8", "#d62728", "#d8d0f0", "#e0a030", "#2ca02c")
 
 
 class PlotError(Exception):
@@ -206,8 +210,14 @@ def save(fig, out_png, dpi):
             os.remove(tmp)
 
 
-def colour_values(arrays, field):
+def colour_values(arrays, field, path):
     """Returns (values, colour-bar label, colour map, (vmin, vmax) or None)."""
+    if field == "category":
+        if "category" not in arrays:
+            raise PlotError(f"frame {path} has no 'category' array (run `mistfall classify RUN_DIR` first)")
+        cmap = matplotlib.colors.ListedColormap(CATEGORY_COLOURS)
+        cmap.set_under("0.35")  # 0: inflow water (not classified), dark grey
+        return arrays["category"].astype(float), CATEGORY_LABEL, cmap, (0.5, 6.5)
     if field == "speed":
         return np.linalg.norm(arrays["velocity"], axis=1), "speed [m/s]", "viridis", None
     if field == "pressure":
@@ -225,7 +235,7 @@ def plot_frame(path, out_png, title, pvd_time, field, dimension, spacing, dpi):
     kind = arrays["kind"]
     fluid = (kind == KIND_FLUID) | (kind == KIND_INFLOW)  # inflow buffers are water driven at the inflow speed
     solid = (kind == KIND_WALL) | (kind == KIND_DUMMY)
-    values, label, cmap, limits = colour_values(arrays, field)
+    values, label, cmap, limits = colour_values(arrays, field, path)
     vmin, vmax = limits if limits else (None, None)
     if dimension == 2:
         views = [(0, 1, "x [m]", "y [m]", None)]

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "classify/classification_parameters.hpp"
+
 namespace mistfall {
 
 // Axis-aligned box; only the first `dimension` components are used.
@@ -123,6 +125,7 @@ struct CaseConfig {
   PhysicsConfig physics;
   NumericsConfig numerics;
   OutputConfig output;
+  ClassificationParameters classify;  // [classify]: the six-category classification (src/classify)
 };
 
 const char* toString(PressureSolverKind k);

@@ -96,7 +96,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table root = detail::parseToml(toml_text, source_name);
   const Reader rd(source_name);
   CaseConfig c;
-  rd.checkKeys(root, "", {"case", "domain", "physics", "numerics", "output", "region", "inflow", "outflow"});
+  rd.checkKeys(root, "",
+               {"case", "domain", "physics", "numerics", "output", "classify", "region", "inflow", "outflow"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");
@@ -177,6 +178,17 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(out, "output", "end_time", {0.0, 1e4, true, false}, c.output.end_time, true);
   rd.number(out, "output", "interval", {0.0, c.output.end_time, true, false, "output.end_time"}, c.output.interval);
   rd.number(out, "output", "field_spacing", {0.0, 1e3, false, false}, c.output.field_spacing);
+
+  // [classify] (optional): thresholds of the six-category classification, relative to n0.
+  const toml::table& cl = rd.table(root, "", "classify");
+  rd.checkKeys(cl, "classify",
+               {"isolated_number_density", "isolated_neighbour_fraction", "surface_number_density", "surface_gradient"});
+  const Range fraction{0.0, 1.0, false, false};
+  rd.number(cl, "classify", "isolated_number_density", fraction, c.classify.isolated_number_density);
+  rd.number(cl, "classify", "isolated_neighbour_fraction", fraction, c.classify.isolated_neighbour_fraction);
+  rd.number(cl, "classify", "surface_number_density", fraction, c.classify.surface_number_density);
+  rd.number(cl, "classify", "surface_gradient", {0.0, std::numeric_limits<double>::infinity(), false, true},
+            c.classify.surface_gradient);
 
   // [[region]]
   Field rf = rd.field(root, "", "region");

@@ -29,14 +29,27 @@ int timeDecimals(double end_time) {
 }
 
 std::string timeText(const ProgressSnapshot& s) {
+  if (s.count_unit)
+    return format("%lld/%lld %s", std::llround(s.sim_time), std::llround(s.end_time), s.count_unit);
   const int d = timeDecimals(s.end_time);
   return format("t=%.*f/%.*f s", d, s.sim_time, d, s.end_time);
 }
 
-std::string rateText(double steps_per_second) {
-  if (!std::isfinite(steps_per_second)) return "-- steps/s";
-  if (steps_per_second >= 100.0) return format("%.0f steps/s", steps_per_second);
-  return format("%.1f steps/s", steps_per_second);
+std::string rateText(double steps_per_second, const char* unit = "steps") {
+  if (!std::isfinite(steps_per_second)) return format("-- %s/s", unit);
+  if (steps_per_second >= 100.0) return format("%.0f %s/s", steps_per_second, unit);
+  return format("%.1f %s/s", steps_per_second, unit);
+}
+
+std::string rateText(const ProgressSnapshot& s) {
+  return rateText(s.steps_per_second, s.count_unit ? s.count_unit : "steps");
+}
+
+// ", step 12" / "  step 12  dt=1.0e-04 s" between the time and the rate; nothing when counting items.
+std::string stepText(const ProgressSnapshot& s, bool with_dt) {
+  if (s.count_unit) return with_dt ? "  " : ", ";
+  if (with_dt) return format("  step %lld  dt=%.1e s  ", static_cast<long long>(s.step), s.dt);
+  return format(", step %lld, ", static_cast<long long>(s.step));
 }
 
 double steadySeconds() {
@@ -56,9 +69,8 @@ std::string formatDuration(double seconds) {
 
 std::string formatTerminalLine(const ProgressSnapshot& s) {
   const double f = fraction(s);
-  const std::string rest = format("  %5.1f%%  ", 100.0 * f) + timeText(s) +
-                           format("  step %lld  dt=%.1e s  ", static_cast<long long>(s.step), s.dt) +
-                           rateText(s.steps_per_second) + "  ETA " + formatDuration(s.eta_seconds);
+  const std::string rest = format("  %5.1f%%  ", 100.0 * f) + timeText(s) + stepText(s, true) + rateText(s) +
+                           "  ETA " + formatDuration(s.eta_seconds);
   constexpr int kMaxColumns = 99;
   const int width = std::clamp(kMaxColumns - 2 - static_cast<int>(rest.size()), 10, 20);
   const int filled = std::clamp(static_cast<int>(std::lround(f * width)), 0, width);
@@ -74,8 +86,8 @@ std::string formatTerminalLine(const ProgressSnapshot& s) {
 }
 
 std::string formatPlainLine(const ProgressSnapshot& s) {
-  return "progress: " + timeText(s) + format(" (%.0f%%), step %lld, ", 100.0 * fraction(s), (long long)s.step) +
-         rateText(s.steps_per_second) + ", ETA " + formatDuration(s.eta_seconds);
+  return "progress: " + timeText(s) + format(" (%.0f%%)", 100.0 * fraction(s)) + stepText(s, false) + rateText(s) +
+         ", ETA " + formatDuration(s.eta_seconds);
 }
 
 ProgressReporter::ProgressReporter(double end_time, double start_time, std::ostream& out, ProgressMode mode,
@@ -98,6 +110,7 @@ ProgressSnapshot ProgressReporter::snapshot(double now) const {
   s.end_time = end_time_;
   s.step = step_;
   s.dt = dt_;
+  s.count_unit = count_unit_;
   s.elapsed_seconds = now - t0_;
   if (have_update_ && s.elapsed_seconds > 0.0) {
     s.steps_per_second = static_cast<double>(step_ - first_step_ + 1) / s.elapsed_seconds;
@@ -165,8 +178,8 @@ void ProgressReporter::finish() {
     drawn_ = false;
     last_len_ = 0;
   } else {
-    out_ << "progress: done, " << timeText(s) << ", step " << s.step << ", " << rateText(s.steps_per_second)
-         << ", wall " << formatDuration(s.elapsed_seconds) << '\n';
+    out_ << "progress: done, " << timeText(s) << stepText(s, false) << rateText(s) << ", wall "
+         << formatDuration(s.elapsed_seconds) << '\n';
   }
   out_.flush();
   finished_ = true;

@@ -22,6 +22,9 @@ struct ProgressSnapshot {
   double steps_per_second = std::numeric_limits<double>::quiet_NaN();
   double eta_seconds = std::numeric_limits<double>::quiet_NaN();
   double elapsed_seconds = 0.0;
+  // Counting items instead of simulated time: sim_time / end_time are item counts shown as "3/10 frames", and
+  // steps_per_second is items per second ("frames/s"); step and dt are not shown. Null: simulated time.
+  const char* count_unit = nullptr;
 };
 
 // Pure formatting helpers.
@@ -40,6 +43,9 @@ class ProgressReporter {
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
 
+  // Counts items (e.g. "frames") instead of simulated time (see ProgressSnapshot::count_unit); report progress with
+  // update(done, done, 0). Call before the first update.
+  void countIn(const char* unit) { count_unit_ = unit; }
   void update(double sim_time, std::int64_t step, double dt);  // cheap; redraws at most ~10 times/s
   void log(const std::string& line);  // prints a line without garbling the bar
   void finish();                      // final state + newline (terminal) or a summary line (plain); idempotent
@@ -63,6 +69,7 @@ class ProgressReporter {
   std::int64_t step_ = 0;
   int next_decile_ = 1;             // plain mode: next 10% mark to report
   std::size_t last_len_ = 0;        // length of the bar currently on screen
+  const char* count_unit_ = nullptr;
 };
 
 }  // namespace mistfall

@@ -10,6 +10,7 @@
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
+#include "cli/classify.hpp"
 #include "cli/progress.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bubble_log.hpp"
@@ -134,7 +135,8 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
 
   auto writeOutput = [&]() {
     const std::string name = frameName(state.next_frame);
-    writeVtp<D>(dir / name, state.particles, state.time, options.ascii);
+    const std::vector<std::uint8_t> category = categoryBytes(classifyFrame<D>(state.particles, config));
+    writeVtp<D>(dir / name, state.particles, state.time, options.ascii, &category);
     collection.add(state.time, name);
     collection.write();
     const auto bubbles = solver.currentBubbles();

@@ -154,14 +154,18 @@ std::vector<T> decodeArray(const std::filesystem::path& file, const std::string&
 }  // namespace
 
 template <int D>
-void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii) {
+void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii,
+              const std::vector<std::uint8_t>* category) {
+  if (category && category->size() != p.size())
+    throw std::invalid_argument("writeVtp: " + std::to_string(category->size()) + " categories for " +
+                                std::to_string(p.size()) + " particles (" + file.string() + ")");
   const std::size_t n = p.size();
   std::vector<std::int64_t> connectivity(n), offsets(n);
   for (std::size_t i = 0; i < n; ++i) {
     connectivity[i] = static_cast<std::int64_t>(i);
     offsets[i] = static_cast<std::int64_t>(i + 1);
   }
-  const std::vector<Array> point_data = {
+  std::vector<Array> point_data = {
       {"phase", 1, asBytes(p.phase)},
       {"kind", 1, asBytes(p.kind)},
       {"enclosed", 1, asBytes(p.enclosed)},
@@ -169,6 +173,7 @@ void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double t
       {"pressure", 1, p.pressure},
       {"number_density", 1, p.number_density},
   };
+  if (category) point_data.push_back({"category", 1, *category});
   // "TIME" as asked for by the pipeline; "TimeValue" is the name VTK/ParaView readers recognise as time.
   // Field data stays inline ascii (17 digits, exact) in both modes.
   const std::vector<Array> field_data = {{"TIME", 1, std::vector<double>{time}},
@@ -202,6 +207,14 @@ void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double t
 
 template <int D>
 Particles<D> readVtp(const std::filesystem::path& file, double* time) {
+  VtpFrameInfo info;
+  Particles<D> p = readVtp<D>(file, info);
+  if (time) *time = info.time;
+  return p;
+}
+
+template <int D>
+Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open VTK file '" + file.string() + "'");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -285,6 +298,9 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
     const auto enclosed = arrays.count("enclosed")
                               ? decodeArray<std::uint8_t>(file, "enclosed", get("enclosed", 1), appended, n)
                               : std::vector<std::uint8_t>(n, 0);
+    frame.category = arrays.count("category")
+                         ? decodeArray<std::uint8_t>(file, "category", get("category", 1), appended, n)
+                         : std::vector<std::uint8_t>();
     decodeArray<std::int64_t>(file, "connectivity", get("connectivity", 1), appended, n);
     decodeArray<std::int64_t>(file, "offsets", get("offsets", 1), appended, n);
 
@@ -306,13 +322,12 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
       p.kind[i] = static_cast<ParticleKind>(kind[i]);
       p.phase[i] = static_cast<Phase>(phase[i]);
     }
-    if (time) {
-      *time = 0.0;
-      for (const char* name : {"TIME", "TimeValue"}) {
-        if (arrays.count(name)) {
-          *time = decodeArray<double>(file, name, get(name, 1), appended, 1)[0];
-          break;
-        }
+    frame.ascii = appended.empty();
+    frame.time = 0.0;
+    for (const char* name : {"TIME", "TimeValue"}) {
+      if (arrays.count(name)) {
+        frame.time = decodeArray<double>(file, name, get(name, 1), appended, 1)[0];
+        break;
       }
     }
     return p;
@@ -323,9 +338,13 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
   }
 }
 
-template void writeVtp<2>(const std::filesystem::path&, const Particles<2>&, double, bool);
-template void writeVtp<3>(const std::filesystem::path&, const Particles<3>&, double, bool);
+template void writeVtp<2>(const std::filesystem::path&, const Particles<2>&, double, bool,
+                          const std::vector<std::uint8_t>*);
+template void writeVtp<3>(const std::filesystem::path&, const Particles<3>&, double, bool,
+                          const std::vector<std::uint8_t>*);
 template Particles<2> readVtp<2>(const std::filesystem::path&, double*);
 template Particles<3> readVtp<3>(const std::filesystem::path&, double*);
+template Particles<2> readVtp<2>(const std::filesystem::path&, VtpFrameInfo&);
+template Particles<3> readVtp<3>(const std::filesystem::path&, VtpFrameInfo&);
 
 }  // namespace mistfall

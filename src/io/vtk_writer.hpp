@@ -2,7 +2,9 @@
 // and a reader for exactly the files this writer produces (used by tests and post-processing stages).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "mps/particles.hpp"
 
@@ -10,15 +12,29 @@ namespace mistfall {
 
 // Writes all particles (escaped ones included; the `kind` array tells them apart) atomically.
 //  Points: Float64 x3 (z = 0 in 2D). Verts: Int64 connectivity/offsets.
-//  PointData: phase (UInt8), kind (UInt8), velocity (Float64 x3, padded), pressure, number_density (Float64).
+//  PointData: phase (UInt8), kind (UInt8), enclosed (UInt8), velocity (Float64 x3, padded), pressure,
+//  number_density (Float64), and, when `category` is given, category (UInt8: the six-category classification of
+//  src/classify, 0 for non-fluid particles; one value per particle).
 //  FieldData: TIME (Float64, 1 value).
 // ascii = false: appended raw little-endian data with UInt64 block headers; ascii = true: inline text.
 template <int D>
-void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii = false);
+void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii = false,
+              const std::vector<std::uint8_t>* category = nullptr);
+
+// What a frame holds besides the particles.
+struct VtpFrameInfo {
+  double time = 0.0;                   // the TIME field (0 if absent)
+  bool ascii = false;                  // written with ascii = true (no appended data)
+  std::vector<std::uint8_t> category;  // the category array; empty when the frame has none
+};
 
 // Reads a file written by writeVtp (binary or ascii). Optionally returns the TIME field (0 if absent).
 // Throws std::runtime_error naming the path on malformed input.
 template <int D>
 Particles<D> readVtp(const std::filesystem::path& file, double* time = nullptr);
+
+// The same, also returning the format and the category array.
+template <int D>
+Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& info);
 
 }  // namespace mistfall

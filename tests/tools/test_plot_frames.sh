@@ -72,6 +72,10 @@ for f in frame_00000 frame_00001 frame_00002 diagnostics; do
 done
 [[ $(ls "$work/plots" | wc -l) -eq 4 ]] || { ls -a "$work/plots" >&2; echo "FAIL: unexpected files" >&2; exit 1; }
 
+# Coloured by the six-category classification (simulate writes the category array with every frame).
+"$py" "$tool" "$work/run" --frames 0 --color category --out "$work/plots_category"
+check_png "$work/plots_category/frame_00000.png"
+
 # ASCII frames, default output folder RUN_DIR/plots.
 "$binary" simulate "$work/tiny.toml" --out "$work/run_ascii" --ascii --until 0.01 --plain-progress 2>/dev/null
 "$py" "$tool" "$work/run_ascii" --frames last --color speed
