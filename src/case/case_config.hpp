@@ -107,6 +107,8 @@ struct NumericsConfig {
   double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
   int bubble_min_particles = 6;         // smaller gas regions inside the liquid move as liquid (docs/two-phase.md)
   GasDomain gas_domain = GasDomain::Open;
+  // [m/s] terminal rise speed of entrained gas below a bubble's resolution (mps/entrained_gas_rise.hpp); 0 = none
+  double entrained_gas_rise_speed = 0.0;
 };
 
 struct OutputConfig {

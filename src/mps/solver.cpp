@@ -10,6 +10,7 @@
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/bubble_pressure.hpp"
 #include "mps/collision.hpp"
+#include "mps/entrained_gas_rise.hpp"
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
@@ -96,6 +97,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     solveGasPressure(dt);
     report_.seconds_pressure += omp_get_wtime() - tp;
     correctGas(dt);
+    riseEntrainedGas(dt);
   }
   markEscaped();
   report_.removed = removeOutflow<D>(state_.particles, config_);
@@ -449,6 +451,16 @@ void MpsSolver<D>::correctGas(double dt) {
     if (!roles_.enclosed_gas[i]) p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }
+}
+
+// Entrained gas below a bubble's resolution rises through the water by exchange (entrained_gas_rise.hpp).
+template <int D>
+void MpsSolver<D>::riseEntrainedGas(double dt) {
+  const double speed = config_.numerics.entrained_gas_rise_speed;
+  if (speed <= 0.0 || gravity_.norm() == 0.0) return;
+  const Vec<D> up = -gravity_ / gravity_.norm();
+  report_.entrained_gas_swaps = mistfall::riseEntrainedGas<D>(state_.particles, neighbours_, regions_, roles_, up,
+                                                              constants_.l0, speed, dt, state_.step);
 }
 
 // The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp).

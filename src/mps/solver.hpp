@@ -7,6 +7,7 @@
 //   -> moveBubbleGas (the bubbles' gas takes the liquid's velocity, extended into the bubble)
 //   -> gas system (when gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
 //      -> correctGas (open gas: velocity and position; bubble gas: position only)
+//      -> riseEntrainedGas (gas below a bubble's resolution climbs through the water by exchange)
 //   -> markEscaped -> removeOutflow -> checkHealth
 #pragma once
 
@@ -52,6 +53,7 @@ struct StepReport {
   std::size_t bubbles = 0;         // enclosed gas regions at the start of the step
   std::int64_t created = 0;        // particles created by inflows in the step
   std::int64_t removed = 0;        // particles removed by outflows in the step
+  std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
 };
 
 template <int D>
@@ -86,6 +88,7 @@ class MpsSolver {
   void solveGasPressure(double dt);
   void correctGas(double dt);
   void moveBubbleGas(double dt);
+  void riseEntrainedGas(double dt);
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
   void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
   void solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,

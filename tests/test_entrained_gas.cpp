@@ -1,0 +1,168 @@
+// Buoyant rise of entrained gas below a bubble's resolution (mps/entrained_gas_rise.hpp): single gas particles
+// enclosed in still water climb by exchange with the liquid above at numerics.entrained_gas_rise_speed on average,
+// reach the surface and join the air; each phase keeps its particle count; with the speed 0 they stay where the
+// water carries them. The exchange draw is uniform.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
+#include "mps/enclosed_gas.hpp"
+#include "mps/entrained_gas_rise.hpp"
+#include "mps/solver.hpp"
+
+using namespace mistfall;
+
+namespace {
+
+constexpr int kColumns = 5, kPockets = 2 * kColumns;
+constexpr double kLowRow = 0.0125, kHighRow = 0.0275, kStartHeight = 0.5 * (kLowRow + kHighRow);
+
+// A 2D tank 0.1 m wide, water 0.06 m deep under air to 0.09 m (open top), l0 = 5 mm, with ten single gas
+// particles in two rows (1.25 and 2.75 cm above the floor), 1.5 cm apart and at least 1.75 cm from the side walls
+// (gas within re of a wall is not enclosed: enclosed_gas.hpp).
+std::string entrainedCase(double rise_speed) {
+  std::string text = R"(
+[case]
+name = "entrained_gas"
+dimension = 2
+[domain]
+min = [-0.02, -0.02]
+max = [0.12, 0.12]
+[numerics]
+particle_spacing = 0.005
+dt_max = 5e-4
+pressure_source = "mixed"
+source_relaxation = 0.01
+entrained_gas_rise_speed = )" + std::to_string(rise_speed) + R"(
+[output]
+end_time = 1.0
+[[region]]
+name = "air"
+material = "gas"
+min = [0.0, 0.0]
+max = [0.1, 0.09]
+[[region]]
+name = "water"
+material = "water"
+min = [0.0, 0.0]
+max = [0.1, 0.06]
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.12, 0.0]
+[[region]]
+name = "left"
+material = "wall"
+min = [-0.02, -0.02]
+max = [0.0, 0.09]
+[[region]]
+name = "right"
+material = "wall"
+min = [0.1, -0.02]
+max = [0.12, 0.09]
+)";
+  for (int k = 0; k < kPockets; ++k)
+    text += "[[region]]\nname = \"pocket" + std::to_string(k) + "\"\nmaterial = \"gas\"\nshape = \"circle\"\n" +
+            "center = [" + std::to_string(0.0175 + 0.015 * (k % kColumns)) + ", " +
+            std::to_string(k < kColumns ? kLowRow : kHighRow) + "]\nradius = 0.003\n";
+  return text;
+}
+
+struct EntrainedRun {
+  CaseConfig config;
+  SimulationState<2> state;
+  std::unique_ptr<MpsSolver<2>> solver;
+  explicit EntrainedRun(double rise_speed) : config(parseCase(entrainedCase(rise_speed), "entrained.toml")) {
+    state.particles = buildParticles<2>(config);
+    solver = std::make_unique<MpsSolver<2>>(config, state);
+  }
+  std::size_t count(Phase phase) const {
+    const auto& p = state.particles;
+    std::size_t c = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) c += p.kind[i] == ParticleKind::Fluid && p.phase[i] == phase;
+    return c;
+  }
+  // Mean height of the gas below y = 0.05 m (the entrained pockets; the air starts at 0.06 m).
+  std::pair<double, std::size_t> submergedGas() const {
+    const auto& p = state.particles;
+    double sum = 0.0;
+    std::size_t c = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (isGas(p.kind[i], p.phase[i]) && p.position[i][1] < 0.05) sum += p.position[i][1], ++c;
+    return {c ? sum / c : 0.0, c};
+  }
+  double gasHeightSum() const {
+    const auto& p = state.particles;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (isGas(p.kind[i], p.phase[i])) sum += p.position[i][1];
+    return sum;
+  }
+  std::size_t swaps = 0, steps = 0;
+  void runTo(double t) {
+    while (state.time < t - 1e-12) swaps += solver->step(t).entrained_gas_swaps, ++steps;
+  }
+};
+
+}  // namespace
+
+TEST(EntrainedGas, RisesAtTheSetSpeedAndKeepsEachPhasesCount) {
+  const double speed = 0.15, t = 0.1, l0 = 0.005;
+  EntrainedRun run(speed);
+  const std::size_t gas0 = run.count(Phase::Gas), liquid0 = run.count(Phase::Liquid);
+  auto [height0, pockets] = run.submergedGas();
+  ASSERT_EQ(pockets, static_cast<std::size_t>(kPockets));
+  ASSERT_NEAR(height0, kStartHeight, 1e-12);
+  const double sum0 = run.gasHeightSum();
+  run.runTo(t);
+  // Swaps drawn with probability U dt / l0 per step and pocket (dt = dt_max here): about 30 in all, binomial.
+  const double expected_swaps = kPockets * static_cast<double>(run.steps) * speed * 5e-4 / l0;
+  EXPECT_NEAR(static_cast<double>(run.swaps), expected_swaps, 3.0 * std::sqrt(expected_swaps));
+  // The gas climbs the water by about l0 a swap: the mean rise speed of a pocket is U (the 240 particles of still
+  // air above add a little noise to the sum of heights).
+  const double climb = (run.gasHeightSum() - sum0) / kPockets;
+  EXPECT_NEAR(climb / static_cast<double>(run.swaps) * kPockets, l0, 0.25 * l0) << "climb per swap";
+  EXPECT_NEAR(climb / t, speed, 0.4 * speed) << "mean rise speed";
+  std::printf("entrained gas: %zu swaps (expected %.1f), climb %.4f m per pocket, rise speed %.3f m/s\n", run.swaps, expected_swaps, climb, climb / t);
+  EXPECT_EQ(run.count(Phase::Gas), gas0);
+  EXPECT_EQ(run.count(Phase::Liquid), liquid0);
+}
+
+TEST(EntrainedGas, ReachesTheSurfaceAndJoinsTheAir) {
+  EntrainedRun run(0.25);
+  run.runTo(0.3);  // 7.5 cm of climb at 0.25 m/s for a way up of at most 4.75 cm
+  auto [height, submerged] = run.submergedGas();
+  EXPECT_EQ(submerged, 0u) << "entrained gas left in the water, mean height " << height;
+  const auto& p = run.state.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_FALSE(p.enclosed[i]) << "particle " << i << " still enclosed";
+}
+
+TEST(EntrainedGas, WithoutARiseSpeedItStaysWithTheWater) {
+  EntrainedRun run(0.0);
+  run.runTo(0.1);
+  auto [height, submerged] = run.submergedGas();
+  EXPECT_EQ(submerged, static_cast<std::size_t>(kPockets));
+  EXPECT_NEAR(height, kStartHeight, 0.005);
+}
+
+TEST(EntrainedGas, DrawIsUniform) {
+  // Mean and the fraction below 0.1 of 100000 draws over steps and indices.
+  double sum = 0.0;
+  int below = 0;
+  const int n = 100000;
+  for (int k = 0; k < n; ++k) {
+    const double u = entrainedGasDraw(k / 100, static_cast<std::size_t>(k % 100));
+    ASSERT_GE(u, 0.0);
+    ASSERT_LT(u, 1.0);
+    sum += u;
+    below += u < 0.1;
+  }
+  EXPECT_NEAR(sum / n, 0.5, 0.005);
+  EXPECT_NEAR(static_cast<double>(below) / n, 0.1, 0.003);
+}
