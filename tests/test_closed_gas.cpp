@@ -20,7 +20,7 @@ namespace {
 
 // A closed 2D box 0.1 m x 0.1 m (l0 = 5 mm, walls all round): a 2 cm layer of water under air, optionally with a
 // void in the air: a band 1 cm high at y = 0.045-0.055 m left empty.
-std::string airBoxCase(const std::string& gas_domain, bool void_band) {
+std::string airBoxCase(const std::string& gas_domain, bool void_band, bool floor_pocket = false) {
   std::string text = R"(
 [case]
 name = "closed_air"
@@ -43,6 +43,8 @@ end_time = 1.0
   else
     text += "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.1]\n";
   text += "[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.02]\n";
+  if (floor_pocket)  // two gas particles in the water's lower left corner, against the floor and the wall
+    text += "[[region]]\nname = \"pocket\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.005]\n";
   text += R"(
 [[region]]
 name = "floor"
@@ -163,4 +165,28 @@ TEST(ClosedGas, VoidDrawsTheGasInGently) {
     short_of_neighbours += count < 9;  // 12 in a full lattice at re = 2.1 l0
   }
   EXPECT_EQ(short_of_neighbours, 0u);
+}
+
+// A pocket of gas in the water against the floor and the side wall: in an open gas domain it borders walls, so it
+// is not enclosed (it would be open air inside the pool); in a closed one it is entrained gas. The air above, which
+// touches the water, the walls and the lid, is open in both.
+TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
+  for (const bool closed : {false, true}) {
+    AirBox box(airBoxCase(closed ? "closed" : "open", false, true));
+    const auto& p = box.state.particles;
+    const auto& nl = box.solver->currentNeighbours();
+    GasRegions regions;
+    findGasRegions<2>(p, nl, box.solver->constants().re_number_density, 0.005, regions, nullptr, closed ? 6 : 0);
+    std::size_t pocket = 0, air = 0, pocket_enclosed = 0, air_enclosed = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!isGas(p.kind[i], p.phase[i])) continue;
+      const bool in_pocket = p.position[i][1] < 0.02;
+      (in_pocket ? pocket : air) += 1;
+      (in_pocket ? pocket_enclosed : air_enclosed) += regions.enclosed_particle[i];
+    }
+    ASSERT_EQ(pocket, 2u);
+    EXPECT_EQ(pocket_enclosed, closed ? 2u : 0u) << (closed ? "closed" : "open");
+    EXPECT_EQ(air_enclosed, 0u) << (closed ? "closed" : "open");
+    EXPECT_GT(air, 100u);
+  }
 }

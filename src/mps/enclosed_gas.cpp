@@ -54,7 +54,7 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0) {
 
 template <int D>
 void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
-                    const std::vector<char>* was_enclosed) {
+                    const std::vector<char>* was_enclosed, std::size_t closed_small_region) {
   const std::size_t n = p.size();
   if (nl.particleCount() != n)
     throw std::invalid_argument("gas regions: neighbour list holds " + std::to_string(nl.particleCount()) +
@@ -64,7 +64,7 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
   const auto gas = [&](std::int64_t j) { return isGas(p.kind[j], p.phase[j]); };
 
   // Per gas particle: does it border something other than liquid (wall, dummy, open space)?
-  std::vector<char> open(n, 0);
+  std::vector<char> open(n, 0), touches_liquid(n, 0);
   const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < count; ++i) {
@@ -75,7 +75,9 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
       const auto j = nl.indices[s];
       if (!isActive(p.kind[j]) || (p.position[j] - p.position[i]).squaredNorm() >= link2) continue;
       ++neighbours;
-      if (!gas(j) && !(p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid)) foreign = true;
+      const bool liquid = p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid;
+      if (!gas(j) && !liquid) foreign = true;
+      if (liquid) touches_liquid[i] = 1;
     }
     const bool exempt = was_enclosed && static_cast<std::size_t>(i) < was_enclosed->size() && (*was_enclosed)[i];
     open[i] = foreign || (neighbours < min_neighbours && !exempt);
@@ -104,6 +106,18 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
       out.region_of[i] = out.region_of[root];
     }
     if (open[i]) out.enclosed[out.region_of[i]] = 0;
+  }
+  // A closed gas domain has no open space: a small region touching liquid is a pocket in it, whatever it borders.
+  if (closed_small_region > 0) {
+    std::vector<std::size_t> size(out.enclosed.size(), 0);
+    std::vector<char> wet(out.enclosed.size(), 0);
+    for (std::int64_t i = 0; i < count; ++i) {
+      if (out.region_of[i] < 0) continue;
+      ++size[out.region_of[i]];
+      wet[out.region_of[i]] |= touches_liquid[i];
+    }
+    for (std::size_t r = 0; r < size.size(); ++r)
+      if (size[r] < closed_small_region && wet[r]) out.enclosed[r] = 1;
   }
 
   out.enclosed_particle.assign(n, 0);
@@ -149,9 +163,9 @@ std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegion
 }
 
 template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*);
+                                   const std::vector<char>*, std::size_t);
 template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*);
+                                   const std::vector<char>*, std::size_t);
 template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
 template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);
 

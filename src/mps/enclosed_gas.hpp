@@ -15,6 +15,10 @@
 //        given) is exempt from this count: inside a moving bubble the gas opens small gaps next to the liquid,
 //        which do not make the bubble open.
 //    A lone gas particle surrounded by liquid is a bubble of one particle.
+//  * In a closed gas domain (numerics.gas_domain = "closed", `closed_small_region` > 0) there is no open space, so
+//    a region of fewer than closed_small_region particles that touches liquid is enclosed whatever else it borders
+//    (walls, or gaps that leave it short of neighbours): a pocket of air dragged into the pool, against its floor or
+//    between sparse water, is entrained gas, not open air.
 //  * delta_gl (enclosed_particle) is 1 for the gas particles of enclosed regions, 0 otherwise.
 //  * Bubble statistics (enclosed regions only, by region id): particle count N, mean pressure, centroid
 //    (padded with 0 to three components) and size N l0^D (area in 2D, volume in 3D).
@@ -60,7 +64,7 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0);
 
 template <int D>
 void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
-                    const std::vector<char>* was_enclosed = nullptr);
+                    const std::vector<char>* was_enclosed = nullptr, std::size_t closed_small_region = 0);
 
 template <int D>
 std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegions& r, double l0);

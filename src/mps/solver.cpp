@@ -117,7 +117,8 @@ template <int D>
 void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
     auto& p = state_.particles;
-    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed);
+    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed,
+                      closedSmallRegion());
     p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
   } else {
@@ -125,6 +126,15 @@ void MpsSolver<D>::findBubbles() {
   }
   assignCouplingRoles<D>(state_.particles, regions_, roles_,
                          static_cast<std::size_t>(config_.numerics.bubble_min_particles));
+}
+
+// In a closed gas domain a gas region below a bubble's resolution that touches liquid is entrained gas
+// (enclosed_gas.hpp); 0 (off) when the gas borders open space.
+template <int D>
+std::size_t MpsSolver<D>::closedSmallRegion() const {
+  return config_.numerics.gas_domain == GasDomain::Closed
+             ? static_cast<std::size_t>(config_.numerics.bubble_min_particles)
+             : 0;
 }
 
 template <int D>
@@ -139,7 +149,7 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   buildNeighbours();
   GasRegions regions;
   findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
-                    &state_.particles.enclosed);
+                    &state_.particles.enclosed, closedSmallRegion());
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 

@@ -81,6 +81,7 @@ class MpsSolver {
   void predict(double dt);
   void collide(double dt);
   void findBubbles();
+  std::size_t closedSmallRegion() const;
   void computeLiquidNumberDensity();
   void solveLiquidPressure(double dt);
   void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
