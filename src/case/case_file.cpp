@@ -96,7 +96,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table root = detail::parseToml(toml_text, source_name);
   const Reader rd(source_name);
   CaseConfig c;
-  rd.checkKeys(root, "", {"case", "domain", "physics", "numerics", "output", "region", "inflow", "outflow"});
+  rd.checkKeys(root, "", {"case", "domain", "physics", "numerics", "output", "region", "inflow", "outflow", "texture"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");
@@ -182,6 +182,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
+  detail::readTexture(rd, root, c);
   return c;
 }
 

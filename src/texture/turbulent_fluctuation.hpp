@@ -20,11 +20,10 @@
 #include <limits>
 
 #include "texture/counter_rng.hpp"
+#include "texture/fluctuation_model.hpp"
 #include "texture/particle_motion.hpp"
 
 namespace mistfall {
-
-enum class FluctuationModel { Redrawn, Langevin };
 
 struct FluctuationParameters {
   FluctuationModel model = FluctuationModel::Redrawn;
