@@ -23,6 +23,7 @@
 #include "io/grid_fields.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
+#include "support/run_cli.hpp"
 #include "support/same_particles.hpp"
 #include "support/scratch.hpp"
 
@@ -33,6 +34,9 @@ namespace {
 
 using test_support::freshDir;
 using test_support::slurp;
+using test_support::CliResult;
+using test_support::quoted;
+using test_support::runCli;
 
 fs::path writeCase(const fs::path& dir, const std::string& name, const std::string& text) {
   const fs::path file = dir / name;
@@ -146,29 +150,6 @@ Captured simulate(const SimulateOptions& o) {
   return r;
 }
 
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-};
-
-// Runs the real `mistfall` executable with `args` (already shell-quoted as needed).
-CliResult runCli(const std::string& args) {
-  static int counter = 0;
-  fs::create_directories(test_support::scratchRoot());
-  const std::string tag = std::to_string(counter++);
-  const fs::path out = test_support::scratchRoot() / ("cli_stdout_" + tag + ".txt");
-  const fs::path err = test_support::scratchRoot() / ("cli_stderr_" + tag + ".txt");
-  const std::string cmd = std::string("'") + MISTFALL_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
-                          err.string() + "' </dev/null";
-  const int status = std::system(cmd.c_str());
-  CliResult r;
-  r.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 std::vector<fs::path> frameFiles(const fs::path& run) {
   std::vector<fs::path> files;

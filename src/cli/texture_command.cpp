@@ -1,0 +1,179 @@
+// `mistfall texture`: steps the texture cloud between the saved frames of a run (see texture_command.hpp).
+// Frame 0: sources are spawned from the isolated particles, the cloud is written. Frame n > 0: the cloud is
+// stepped from t_{n-1} to t_n with equal steps of at most texture.time_step through the flow grids of frames
+// n-1 and n (linear in time), then frame n's newly isolated particles spawn sources, then the cloud is written.
+#include "cli/texture_command.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <iostream>
+#include <regex>
+#include <stdexcept>
+
+#include "case/case_file.hpp"
+#include "cli/progress.hpp"
+#include "io/grid_fields.hpp"
+#include "io/pvd_collection.hpp"
+#include "io/texture_files.hpp"
+#include "io/vtk_writer.hpp"
+#include "texture/source_tracker.hpp"
+
+namespace fs = std::filesystem;
+
+namespace mistfall {
+
+namespace {
+
+struct FrameFiles {
+  double time;
+  fs::path frame, fields;
+  std::string number;  // NNNNN
+};
+
+// Bad input: exit code 1, nothing written.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::vector<FrameFiles> listFrames(const fs::path& run) {
+  PvdCollection pvd(run / "frames.pvd");
+  if (!fs::exists(pvd.path())) throw InputError(pvd.path().string() + " does not exist: not a simulate run directory");
+  pvd.load();
+  static const std::regex name(R"(frames/frame_(\d+)\.vtp)");
+  std::vector<FrameFiles> frames;
+  for (const auto& e : pvd.entries()) {
+    std::smatch m;
+    if (!std::regex_match(e.file, m, name)) throw InputError("unexpected frame name '" + e.file + "' in frames.pvd");
+    frames.push_back({e.time, run / e.file, run / ("fields/fields_" + m[1].str() + ".vti"), m[1].str()});
+    if (!fs::exists(frames.back().frame)) throw InputError(frames.back().frame.string() + " does not exist");
+    if (!fs::exists(frames.back().fields))
+      throw InputError(frames.back().fields.string() +
+                       " does not exist: the texture needs the flow fields; set output.field_spacing > 0 in the case "
+                       "and run simulate again");
+  }
+  if (frames.empty()) throw InputError("frames.pvd lists no frames");
+  return frames;
+}
+
+std::vector<std::uint8_t> readCategory(const fs::path& frame, const fs::path& run) {
+  auto category = readVtpByteArray(frame, "category");
+  if (!category)
+    throw InputError(frame.string() + " has no 'category' array: run `mistfall classify " + run.string() +
+                     "` first");
+  return *category;
+}
+
+TextureParameters textureParameters(const CaseConfig& run, const TextureConfig& t) {
+  TextureParameters p;
+  p.seed = static_cast<std::uint64_t>(t.seed);
+  p.shedding.fine_diameter = t.fine_diameter;
+  p.shedding.representatives_per_source = t.representatives_per_source;
+  p.shedding.representative_ratio = t.representative_ratio;
+  p.shedding.source_lifetime = t.source_lifetime;
+  p.fluctuation.model = t.fluctuation;
+  p.fluctuation.time_scale_constant = t.langevin_time_scale;
+  p.fluctuation.ds = run.numerics.particle_spacing;
+  p.added_mass = t.added_mass;
+  p.source_diameter = t.source_diameter;
+  p.width = t.width;
+  p.gravity = Vec3(run.physics.gravity[0], run.physics.gravity[1], run.physics.gravity[2]);
+  p.liquid_density = run.physics.liquid.density;
+  p.liquid_viscosity = run.physics.liquid.kinematic_viscosity;
+  p.gas_density = run.physics.gas.density;
+  p.gas_viscosity = run.physics.gas.kinematic_viscosity;
+  return p;
+}
+
+template <int D>
+void spawnSources(const fs::path& frame_file, const fs::path& run, IsolatedParticleTracker& tracker,
+                  TextureCloud& cloud, TextureCountsRow& row) {
+  double time = 0.0;
+  const Particles<D> p = readVtp<D>(frame_file, &time);
+  const auto category = readCategory(frame_file, run);
+  std::vector<Vec3> x(p.size(), Vec3::Zero()), u(p.size(), Vec3::Zero());
+  for (std::size_t i = 0; i < p.size(); ++i) x[i].head<D>() = p.position[i], u[i].head<D>() = p.velocity[i];
+  for (const SourceBirth& b : tracker.update(x, u, category, time)) {
+    const std::uint64_t id = cloud.addSource(b.kind, b.position, b.velocity, time);
+    if (D == 2) cloud.position.back()[2] = cloud.acrossPosition(id);
+    ++(b.kind == TextureKind::Droplet ? row.spawned_droplets : row.spawned_bubbles);
+  }
+}
+
+template <int D>
+int run(const CaseConfig& config, const TextureOptions& o,
+        const std::vector<FrameFiles>& frames) {
+  const fs::path out = o.run_dir / "texture";
+  const TextureConfig& texture = config.texture;
+  TextureCloud cloud(textureParameters(config, texture));
+  IsolatedParticleTracker tracker(texture.match_radius * config.numerics.particle_spacing);
+  PvdCollection pvd(out / "texture.pvd");
+  std::vector<TextureCountsRow> rows;
+  TextureCountsRow totals;
+  ProgressReporter progress(frames.back().time, frames.front().time, std::cerr, o.force_plain_progress);
+  std::shared_ptr<const ImageData> earlier;
+  std::int64_t steps = 0;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    auto later = std::make_shared<const ImageData>(readVti(frames[f].fields));
+    if (f > 0) {
+      const GridFlow flow(earlier, later, D);
+      const double t0 = frames[f - 1].time, span = frames[f].time - t0;
+      const auto n = static_cast<std::int64_t>(std::ceil(span / texture.time_step - 1e-9));
+      for (std::int64_t s = 0; s < n; ++s) {
+        cloud.step(flow, t0 + span * s / n, span / n);
+        progress.update(t0 + span * (s + 1) / n, ++steps, span / n);
+      }
+    }
+    earlier = later;
+    spawnSources<D>(frames[f].frame, o.run_dir, tracker, cloud, totals);
+    const std::string stem = "texture_" + frames[f].number;
+    writeTextureBinary(out / (stem + ".bin"), cloud, frames[f].time);
+    writeTextureVtp(out / (stem + ".vtp"), cloud, frames[f].time, o.ascii);
+    pvd.add(frames[f].time, stem + ".vtp");
+    pvd.write();
+    totals.time = frames[f].time;
+    totals.counts = cloud.counts();
+    totals.tally = cloud.tally();
+    rows.push_back(totals);
+    writeTextureCsv(out / "texture.csv", rows);
+  }
+  progress.finish();
+  const auto& c = totals.counts;
+  std::cerr << "mistfall: texture done, " << frames.size() << " frames in " << out << "; at t = " << totals.time
+            << " s: " << c[0] << " droplets, " << c[1] << " mist, " << c[2] << " bubbles, " << c[3]
+            << " micro-bubbles\n";
+  return 0;
+}
+
+}  // namespace
+
+int runTexture(const TextureOptions& o) {
+  CaseConfig config;
+  std::vector<FrameFiles> frames;
+  try {
+    if (!fs::is_directory(o.run_dir)) throw InputError("run directory " + o.run_dir.string() + " does not exist");
+    config = loadCaseFile(o.run_dir / "case.toml");
+    frames = listFrames(o.run_dir);
+    readCategory(frames.front().frame, o.run_dir);
+    const fs::path out = o.run_dir / "texture";
+    if (fs::exists(out) && !fs::is_empty(out) && !o.overwrite)
+      throw InputError(out.string() + " exists and is not empty (use --overwrite to replace it)");
+  } catch (const std::exception& e) {
+    std::cerr << "mistfall texture: " << e.what() << "\n";
+    return 1;
+  }
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  try {
+    fs::remove_all(o.run_dir / "texture");
+    fs::create_directories(o.run_dir / "texture");
+    return config.dimension == 2 ? run<2>(config, o, frames) : run<3>(config, o, frames);
+  } catch (const InputError& e) {
+    std::cerr << "mistfall texture: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "mistfall texture: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace mistfall
