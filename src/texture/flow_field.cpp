@@ -33,6 +33,13 @@ struct GridFlow::Weights {
 GridFlow::GridFlow(std::shared_ptr<const ImageData> earlier, std::shared_ptr<const ImageData> later, int dimension)
     : frames_{std::move(earlier), std::move(later)}, dimension_(dimension) {
   checkGrid(*frames_[0], *frames_[1]);
+  for (int f = 0; f < 2; ++f) {
+    const ImageData& g = *frames_[f];
+    auto values = [&](const char* name) { return &g.find(name)->values; };
+    arrays_[f][0] = {values("gas_velocity"), values("gas_sps_k"), values("gas_coverage"), values("liquid_coverage")};
+    arrays_[f][1] = {values("liquid_velocity"), values("liquid_sps_k"), values("liquid_coverage"),
+                     values("gas_coverage")};
+  }
 }
 
 // Corner nodes and multilinear weights of the cell holding x; false outside the grid.
@@ -72,20 +79,13 @@ FlowSample GridFlow::sample(bool liquid, const Vec3& x, double t) const {
   }
   const double t0 = frames_[0]->time, t1 = frames_[1]->time;
   const double later = t1 > t0 ? std::clamp((t - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
-  const char* velocity = liquid ? "liquid_velocity" : "gas_velocity";
-  const char* energy = liquid ? "liquid_sps_k" : "gas_sps_k";
-  const char* coverage = liquid ? "liquid_coverage" : "gas_coverage";
-  const char* other = liquid ? "gas_coverage" : "liquid_coverage";
   double own = 0.0, opposite = 0.0, k = 0.0;
   Vec3 u = Vec3::Zero();
   for (int f = 0; f < 2; ++f) {
     const double tw = f == 0 ? 1.0 - later : later;
     if (tw == 0.0) continue;
-    const ImageData& g = *frames_[f];
-    const auto& uv = g.find(velocity)->values;
-    const auto& kv = g.find(energy)->values;
-    const auto& cv = g.find(coverage)->values;
-    const auto& ov = g.find(other)->values;
+    const PhaseArrays& a = arrays_[f][liquid ? 1 : 0];
+    const auto &uv = *a.velocity, &kv = *a.k, &cv = *a.coverage, &ov = *a.other_coverage;
     for (int c = 0; c < w.count; ++c) {
       const std::size_t n = w.node[c];
       const double cw = tw * w.weight[c] * cv[n];

@@ -49,7 +49,12 @@ class GridFlow final : public FlowField {
  private:
   struct Weights;
   bool weights(const Vec3& x, Weights& w) const;
+  // One phase's arrays of one frame: velocity (3 per node), k, own coverage, the other phase's coverage.
+  struct PhaseArrays {
+    const std::vector<double>*velocity, *k, *coverage, *other_coverage;
+  };
   std::shared_ptr<const ImageData> frames_[2];
+  PhaseArrays arrays_[2][2];  // [frame][liquid]
   int dimension_;
 };
 
