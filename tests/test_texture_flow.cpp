@@ -65,6 +65,17 @@ TEST(TextureFlow, UncoveredNodesDoNotDragTheMeanAndSetTheLiquidFraction) {
   EXPECT_NEAR(liquid.k, 5.0, 1e-12);
 }
 
+TEST(TextureFlow, EmptySpaceOfAWaterOnlyRunCountsAsAir) {
+  // No gas at all: full liquid coverage 2 on the right half, a thin 0.2 on the left half.
+  auto g = std::make_shared<ImageData>(*grid(0.0));
+  for (auto& a : g->arrays) std::fill(a.values.begin(), a.values.end(), 0.0);
+  auto& liquid = g->arrays[5].values;
+  for (std::size_t node = 0; node < g->nodeCount(); ++node) liquid[node] = node % 5 >= 2 ? 2.0 : 0.2;
+  const GridFlow flow(g, g, 2);
+  EXPECT_NEAR(flow.sample(true, Vec3(1.35, 2.1, 0.0), 0.0).liquid_fraction, 1.0, 1e-12);
+  EXPECT_NEAR(flow.sample(false, Vec3(1.05, 2.1, 0.0), 0.0).liquid_fraction, 0.1, 1e-12);
+}
+
 TEST(TextureFlow, OutsideTheGridIsReported) {
   const GridFlow flow(grid(0.0), grid(0.1), 2);
   EXPECT_FALSE(flow.sample(false, Vec3(0.99, 2.1, 0.0), 0.0).inside);

@@ -40,6 +40,14 @@ GridFlow::GridFlow(std::shared_ptr<const ImageData> earlier, std::shared_ptr<con
     arrays_[f][1] = {values("liquid_velocity"), values("liquid_sps_k"), values("liquid_coverage"),
                      values("gas_coverage")};
   }
+  std::vector<double> filled;
+  for (std::size_t n = 0; n < frames_[0]->nodeCount(); ++n)
+    if (const double c = (*arrays_[0][0].coverage)[n] + (*arrays_[0][0].other_coverage)[n]; c > 0.0)
+      filled.push_back(c);
+  if (!filled.empty()) {
+    std::nth_element(filled.begin(), filled.begin() + filled.size() / 2, filled.end());
+    full_coverage_ = filled[filled.size() / 2];
+  }
 }
 
 // Corner nodes and multilinear weights of the cell holding x; false outside the grid.
@@ -100,7 +108,8 @@ FlowSample GridFlow::sample(bool liquid, const Vec3& x, double t) const {
     out.k = k / own;
   }
   const double liquid_cov = liquid ? own : opposite, total = own + opposite;
-  out.liquid_fraction = total > 0.0 ? liquid_cov / total : 0.0;
+  const double reference = std::max(total, full_coverage_);
+  out.liquid_fraction = reference > 0.0 ? liquid_cov / reference : 0.0;
   return out;
 }
 

@@ -4,7 +4,10 @@
 // io/grid_fields.hpp), linear in time between two frames and bilinear (2D) / trilinear (3D) in space:
 //   U(x) = sum_n w_n C_n U_n / sum_n w_n C_n,   k(x) likewise,   C_n the phase's coverage at node n,
 // so nodes the phase does not reach (C = 0, written with U = 0) do not drag the mean towards 0.
-// liquid fraction = C_liquid / (C_liquid + C_gas) interpolated the same way (0 where neither phase is near).
+// liquid fraction = C_liquid / max(C_liquid + C_gas, C_full), the coverages interpolated the same way, with
+// C_full the coverage of a filled neighbourhood, taken as the median of the nonzero total coverage over the
+// earlier grid's nodes. Where both phases are simulated C_liquid + C_gas ~ C_full and this is the share of
+// water; in a run without air (water alone) the empty space counts as air instead of 0/0.
 // A 2D grid is extruded across the fall: z is ignored and U_z = 0.
 #pragma once
 
@@ -55,6 +58,7 @@ class GridFlow final : public FlowField {
   };
   std::shared_ptr<const ImageData> frames_[2];
   PhaseArrays arrays_[2][2];  // [frame][liquid]
+  double full_coverage_ = 0.0;  // C_full
   int dimension_;
 };
 
