@@ -17,7 +17,7 @@
 #include "io/pvd_collection.hpp"
 #include "io/texture_files.hpp"
 #include "io/vtk_writer.hpp"
-#include "texture/source_tracker.hpp"
+#include "texture/texture_stage.hpp"
 
 namespace fs = std::filesystem;
 
@@ -64,82 +64,39 @@ std::vector<std::uint8_t> readCategory(const fs::path& frame, const fs::path& ru
   return *category;
 }
 
-TextureParameters textureParameters(const CaseConfig& run, const TextureConfig& t) {
-  TextureParameters p;
-  p.seed = static_cast<std::uint64_t>(t.seed);
-  p.shedding.fine_diameter = t.fine_diameter;
-  p.shedding.representatives_per_source = t.representatives_per_source;
-  p.shedding.representative_ratio = t.representative_ratio;
-  p.shedding.source_lifetime = t.source_lifetime;
-  p.fluctuation.model = t.fluctuation;
-  p.fluctuation.time_scale_constant = t.langevin_time_scale;
-  p.fluctuation.ds = run.numerics.particle_spacing;
-  p.added_mass = t.added_mass;
-  p.source_diameter = t.source_diameter;
-  p.width = t.width;
-  p.gravity = Vec3(run.physics.gravity[0], run.physics.gravity[1], run.physics.gravity[2]);
-  p.liquid_density = run.physics.liquid.density;
-  p.liquid_viscosity = run.physics.liquid.kinematic_viscosity;
-  p.gas_density = run.physics.gas.density;
-  p.gas_viscosity = run.physics.gas.kinematic_viscosity;
-  return p;
-}
-
 template <int D>
-void spawnSources(const fs::path& frame_file, const fs::path& run, IsolatedParticleTracker& tracker,
-                  TextureCloud& cloud, TextureCountsRow& row) {
+void spawnFromFrame(const fs::path& frame_file, const fs::path& run, TextureStage& stage) {
   double time = 0.0;
   const Particles<D> p = readVtp<D>(frame_file, &time);
   const auto category = readCategory(frame_file, run);
   std::vector<Vec3> x(p.size(), Vec3::Zero()), u(p.size(), Vec3::Zero());
   for (std::size_t i = 0; i < p.size(); ++i) x[i].head<D>() = p.position[i], u[i].head<D>() = p.velocity[i];
-  for (const SourceBirth& b : tracker.update(x, u, category, time)) {
-    const std::uint64_t id = cloud.addSource(b.kind, b.position, b.velocity, time);
-    if (D == 2) cloud.position.back()[2] = cloud.acrossPosition(id);
-    ++(b.kind == TextureKind::Droplet ? row.spawned_droplets : row.spawned_bubbles);
-  }
+  stage.spawn(x, u, category, time);
 }
 
 template <int D>
-int run(const CaseConfig& config, const TextureOptions& o,
-        const std::vector<FrameFiles>& frames) {
+int run(const CaseConfig& config, const TextureOptions& o, const std::vector<FrameFiles>& frames) {
   const fs::path out = o.run_dir / "texture";
-  const TextureConfig& texture = config.texture;
-  TextureCloud cloud(textureParameters(config, texture));
-  IsolatedParticleTracker tracker(texture.match_radius * config.numerics.particle_spacing);
+  ProgressReporter progress(frames.back().time, frames.front().time, std::cerr, o.force_plain_progress);
+  TextureStage stage(config, [&](double t, std::int64_t step, double dt) { progress.update(t, step, dt); });
   PvdCollection pvd(out / "texture.pvd");
   std::vector<TextureCountsRow> rows;
-  TextureCountsRow totals;
-  ProgressReporter progress(frames.back().time, frames.front().time, std::cerr, o.force_plain_progress);
-  std::shared_ptr<const ImageData> earlier;
-  std::int64_t steps = 0;
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    auto later = std::make_shared<const ImageData>(readVti(frames[f].fields));
-    if (f > 0) {
-      const GridFlow flow(earlier, later, D);
-      const double t0 = frames[f - 1].time, span = frames[f].time - t0;
-      const auto n = static_cast<std::int64_t>(std::ceil(span / texture.time_step - 1e-9));
-      for (std::int64_t s = 0; s < n; ++s) {
-        cloud.step(flow, t0 + span * s / n, span / n);
-        progress.update(t0 + span * (s + 1) / n, ++steps, span / n);
-      }
-    }
-    earlier = later;
-    spawnSources<D>(frames[f].frame, o.run_dir, tracker, cloud, totals);
-    const std::string stem = "texture_" + frames[f].number;
-    writeTextureBinary(out / (stem + ".bin"), cloud, frames[f].time);
-    writeTextureVtp(out / (stem + ".vtp"), cloud, frames[f].time, o.ascii);
-    pvd.add(frames[f].time, stem + ".vtp");
+  for (const FrameFiles& frame : frames) {
+    auto grid = std::make_shared<ImageData>(readVti(frame.fields));
+    grid->time = frame.time;  // the frame's time, exactly
+    stage.advanceTo(std::move(grid));
+    spawnFromFrame<D>(frame.frame, o.run_dir, stage);
+    const std::string stem = "texture_" + frame.number;
+    writeTextureBinary(out / (stem + ".bin"), stage.cloud(), frame.time);
+    writeTextureVtp(out / (stem + ".vtp"), stage.cloud(), frame.time, o.ascii);
+    pvd.add(frame.time, stem + ".vtp");
     pvd.write();
-    totals.time = frames[f].time;
-    totals.counts = cloud.counts();
-    totals.tally = cloud.tally();
-    rows.push_back(totals);
+    rows.push_back(stage.row(frame.time));
     writeTextureCsv(out / "texture.csv", rows);
   }
   progress.finish();
-  const auto& c = totals.counts;
-  std::cerr << "mistfall: texture done, " << frames.size() << " frames in " << out << "; at t = " << totals.time
+  const auto& c = rows.back().counts;
+  std::cerr << "mistfall: texture done, " << frames.size() << " frames in " << out << "; at t = " << rows.back().time
             << " s: " << c[0] << " droplets, " << c[1] << " mist, " << c[2] << " bubbles, " << c[3]
             << " micro-bubbles\n";
   return 0;

@@ -18,7 +18,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "texture/texture_cloud.hpp"
+#include "texture/texture_stage.hpp"
 
 namespace mistfall {
 
@@ -35,14 +35,6 @@ void writeTextureBinary(const std::filesystem::path& file, const TextureCloud& c
 TextureSnapshot readTextureBinary(const std::filesystem::path& file);
 
 void writeTextureVtp(const std::filesystem::path& file, const TextureCloud& cloud, double time, bool ascii);
-
-// One row of texture.csv.
-struct TextureCountsRow {
-  double time = 0.0;
-  std::array<std::int64_t, kTextureKinds> counts{};
-  std::int64_t spawned_droplets = 0, spawned_bubbles = 0;
-  TextureTally tally;
-};
 
 // Rewrites texture.csv atomically with all `rows`.
 void writeTextureCsv(const std::filesystem::path& file, const std::vector<TextureCountsRow>& rows);
