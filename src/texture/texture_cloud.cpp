@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mps/erase_marked.hpp"
+
 namespace mistfall {
 
 namespace {
@@ -130,31 +132,8 @@ void TextureCloud::shedFromSources(double t_end, std::vector<char>& remove) {
 }
 
 void TextureCloud::erase(const std::vector<char>& remove) {
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < size(); ++i) {
-    if (remove[i]) continue;
-    position[kept] = position[i];
-    velocity[kept] = velocity[i];
-    fluctuation[kept] = fluctuation[i];
-    previous_mean[kept] = previous_mean[i];
-    diameter[kept] = diameter[i];
-    kind[kept] = kind[i];
-    id[kept] = id[i];
-    birth_time[kept] = birth_time[i];
-    initial_volume[kept] = initial_volume[i];
-    shed[kept] = shed[i];
-    ++kept;
-  }
-  position.resize(kept);
-  velocity.resize(kept);
-  fluctuation.resize(kept);
-  previous_mean.resize(kept);
-  diameter.resize(kept);
-  kind.resize(kept);
-  id.resize(kept);
-  birth_time.resize(kept);
-  initial_volume.resize(kept);
-  shed.resize(kept);
+  eraseMarked(remove, position, velocity, fluctuation, previous_mean, diameter, kind, id, birth_time, initial_volume,
+              shed);
 }
 
 }  // namespace mistfall
