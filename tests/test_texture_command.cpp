@@ -163,3 +163,15 @@ TEST(TextureCommand, RefusesBadInputBeforeWriting) {
   r = runCli("texture " + quoted(run / "nope"));
   EXPECT_EQ(r.code, 1);
 }
+
+TEST(TextureCommand, CategoryIsReadAsUInt8OrInt64) {
+  const fs::path dir = test_support::freshDir("texture_category");
+  const std::vector<double> xyz = {0, 0, 0, 1, 0, 0};
+  writePointsVtp(dir / "a.vtp", xyz, {{"category", 1, std::vector<std::uint8_t>{3, 6}}}, 0.0, false, "category");
+  writePointsVtp(dir / "b.vtp", xyz, {{"category", 1, std::vector<std::int64_t>{1, 5}}}, 0.0, true, "category");
+  writePointsVtp(dir / "c.vtp", xyz, {{"category", 1, std::vector<std::int64_t>{1, 300}}}, 0.0, false, "category");
+  EXPECT_EQ(*readVtpByteArray(dir / "a.vtp", "category"), (std::vector<std::uint8_t>{3, 6}));
+  EXPECT_EQ(*readVtpByteArray(dir / "b.vtp", "category"), (std::vector<std::uint8_t>{1, 5}));
+  EXPECT_FALSE(readVtpByteArray(dir / "a.vtp", "phase").has_value());
+  EXPECT_THROW(readVtpByteArray(dir / "c.vtp", "category"), std::runtime_error);
+}

@@ -83,6 +83,35 @@ TEST(TextureFlow, OutsideTheGridIsReported) {
   EXPECT_TRUE(flow.sample(false, Vec3(1.4, 2.3, 0.0), 0.0).inside);  // the far corner node itself
 }
 
+TEST(TextureFlow, TrilinearIn3D) {
+  // 3 x 4 x 5 nodes; liquid everywhere with velocity (x + 2y - z, 4z, 1) and k = 1 + x y z (trilinear, so interpolation is exact).
+  auto g = std::make_shared<ImageData>();
+  g->origin = {-0.2, 0.1, 0.3};
+  g->spacing = {0.1, 0.05, 0.2};
+  g->dims = {3, 4, 5};
+  const std::size_t n = g->nodeCount();
+  std::vector<double> u(3 * n), k(n), c(n, 1.0), zero3(3 * n, 0.0), zero(n, 0.0);
+  for (std::size_t node = 0; node < n; ++node) {
+    const double x = -0.2 + 0.1 * (node % 3), y = 0.1 + 0.05 * (node / 3 % 4), z = 0.3 + 0.2 * (node / 12);
+    u[3 * node] = x + 2 * y - z;
+    u[3 * node + 1] = 4 * z;
+    u[3 * node + 2] = 1.0;
+    k[node] = 1.0 + x * y * z;
+  }
+  g->arrays = {{"gas_velocity", 3, zero3}, {"liquid_velocity", 3, u}, {"gas_sps_k", 1, zero},
+               {"liquid_sps_k", 1, k},     {"gas_coverage", 1, zero},  {"liquid_coverage", 1, c}};
+  const GridFlow flow(g, g, 3);
+  const Vec3 x(-0.13, 0.21, 0.77);
+  const FlowSample s = flow.sample(true, x, 0.0);
+  ASSERT_TRUE(s.inside);
+  EXPECT_NEAR(s.mean_velocity[0], -0.13 + 0.42 - 0.77, 1e-12);
+  EXPECT_NEAR(s.mean_velocity[1], 4 * 0.77, 1e-12);
+  EXPECT_NEAR(s.mean_velocity[2], 1.0, 1e-12);
+  EXPECT_NEAR(s.k, 1.0 - 0.13 * 0.21 * 0.77, 1e-12);
+  EXPECT_EQ(s.liquid_fraction, 1.0);
+  EXPECT_FALSE(flow.sample(true, Vec3(-0.13, 0.21, 1.2), 0.0).inside);
+}
+
 TEST(TextureFlow, MissingArrayIsAnError) {
   auto bad = std::make_shared<ImageData>(*grid(0.0));
   bad->arrays.pop_back();

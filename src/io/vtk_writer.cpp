@@ -360,8 +360,17 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time) {
 std::optional<std::vector<std::uint8_t>> readVtpByteArray(const std::filesystem::path& file, const std::string& name) {
   VtpDocument d;
   parseVtp(file, d);
-  if (!d.arrays.count(name)) return std::nullopt;
-  return d.decode<std::uint8_t>(name, 1, d.n);
+  const auto it = d.arrays.find(name);
+  if (it == d.arrays.end()) return std::nullopt;
+  if (it->second.type != "Int64") return d.decode<std::uint8_t>(name, 1, d.n);
+  // An Int64 array of small values is accepted too.
+  std::vector<std::uint8_t> out(d.n);
+  const auto wide = d.decode<std::int64_t>(name, 1, d.n);
+  for (std::size_t i = 0; i < d.n; ++i) {
+    if (wide[i] < 0 || wide[i] > 255) fail(file, "array '" + name + "' has a value outside [0, 255]");
+    out[i] = static_cast<std::uint8_t>(wide[i]);
+  }
+  return out;
 }
 
 template void writeVtp<2>(const std::filesystem::path&, const Particles<2>&, double, bool);

@@ -39,8 +39,8 @@ struct VtpArray {
 void writePointsVtp(const std::filesystem::path& file, const std::vector<double>& points,
                     const std::vector<VtpArray>& point_data, double time, bool ascii, const std::string& scalars);
 
-// The UInt8 point array `name` of a .vtp written by writeVtp (e.g. the classifier's "category"), or nullopt when
-// the file has no such array. Throws std::runtime_error naming the path on malformed input.
+// The UInt8 (or Int64, values in [0, 255]) point array `name` of a .vtp (e.g. the classifier's "category"), or
+// nullopt when the file has no such array. Throws std::runtime_error naming the path on malformed input.
 std::optional<std::vector<std::uint8_t>> readVtpByteArray(const std::filesystem::path& file, const std::string& name);
 
 }  // namespace mistfall
