@@ -148,6 +148,14 @@ TEST(TextureCommand, RefusesBadInputBeforeWriting) {
   EXPECT_NE(r.err.find("no 'category' array: run `mistfall classify"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(unclassified / "texture"));
 
+  // Only the last frame unclassified: refused before any file is written.
+  const fs::path partly = makeRun("texture_cli_partly");
+  writeFrame(partly / "frames/frame_00002.vtp", {{0.1, 0.1, 0.0, 0.0, 0, 1}}, 0.1, false);
+  r = runCli("texture " + quoted(partly));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("frame_00002.vtp has no 'category' array"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(partly / "texture"));
+
   const fs::path no_fields = makeRun("texture_cli_nofields", true, false);
   r = runCli("texture " + quoted(no_fields));
   EXPECT_EQ(r.code, 1);

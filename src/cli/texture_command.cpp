@@ -111,7 +111,7 @@ int runTexture(const TextureOptions& o) {
     if (!fs::is_directory(o.run_dir)) throw InputError("run directory " + o.run_dir.string() + " does not exist");
     config = loadCaseFile(o.run_dir / "case.toml");
     frames = listFrames(o.run_dir);
-    readCategory(frames.front().frame, o.run_dir);
+    for (const FrameFiles& f : frames) readCategory(f.frame, o.run_dir);  // all classified, before writing
     const fs::path out = o.run_dir / "texture";
     if (fs::exists(out) && !fs::is_empty(out) && !o.overwrite)
       throw InputError(out.string() + " exists and is not empty (use --overwrite to replace it)");
