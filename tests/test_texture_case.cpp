@@ -30,7 +30,7 @@ TEST(TextureCase, ReadsEveryKey) {
                                              "representative_ratio = 0.01\nsource_diameter = 0.004\n"
                                              "source_lifetime = 0.2\nadded_mass = 0.0\nwidth = 0.3\n"
                                              "fluctuation = \"langevin\"\nlangevin_time_scale = 0.3\n"
-                                             "time_step = 5e-4\nmatch_radius = 2.0\n"),
+                                             "time_step = 5e-4\nmatch_radius = 2.0\nbirth_grace = 0.1\n"),
                                  "cases/x.toml");
   const TextureConfig& t = c.texture;
   EXPECT_EQ(t.seed, 42);
@@ -45,6 +45,7 @@ TEST(TextureCase, ReadsEveryKey) {
   EXPECT_EQ(t.langevin_time_scale, 0.3);
   EXPECT_EQ(t.time_step, 5e-4);
   EXPECT_EQ(t.match_radius, 2.0);
+  EXPECT_EQ(t.birth_grace, 0.1);
 }
 
 TEST(TextureCase, BadKeysNameKeyValueAndRange) {
@@ -62,6 +63,7 @@ TEST(TextureCase, BadKeysNameKeyValueAndRange) {
       {"width = 0", "texture.width = 0 is out of range; allowed (0, 1000]"},
       {"time_step = 0.5", "texture.time_step = 0.5 is out of range; allowed (0, output.interval = 0.01]"},
       {"match_radius = 0", "texture.match_radius = 0 is out of range; allowed (0, 10]"},
+      {"birth_grace = -1", "texture.birth_grace = -1 is out of range; allowed [0, 10]"},
   };
   for (const Bad& b : cases) EXPECT_EQ(errorOf(withTexture(b.line + "\n")), "cases/x.toml: " + b.message) << b.line;
 

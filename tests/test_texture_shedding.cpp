@@ -1,7 +1,8 @@
 // Source shedding and shrinking, eq. (20) as volume bookkeeping (texture/source_shedding.hpp): at every step the
 // volume shed by representatives plus the volume the sources still hold (plus what spent or surfaced sources
 // took with them) equals the sources' initial volume; a source disappears when spent; a bubble source
-// disappears when it reaches the water surface.
+// disappears when it reaches the water surface; a droplet born inside the water's footprint on the grid is kept
+// for the birth grace unless it has reached the air, after which entering the water absorbs it at once.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,4 +101,39 @@ TEST(TextureShedding, BubbleSourceDisappearsAtTheWaterSurface) {
     EXPECT_EQ(cloud.kind[i], TextureKind::MicroBubble);
     EXPECT_LT(cloud.position[i][1], 0.0);
   }
+}
+
+TEST(TextureShedding, DropletBornInTheWaterFootprintIsKeptForTheBirthGrace) {
+  TextureParameters p = params();
+  p.shedding.representatives_per_source = 1;  // keep the cloud to the sources
+  p.shedding.source_lifetime = 100.0;
+  TextureCloud cloud(p);
+  const PoolFlow flow;
+  const std::uint64_t sinking = cloud.addSource(TextureKind::Droplet, Vec3(0.0, -0.01, 0.0), Vec3::Zero(), 0.0);
+  const std::uint64_t leaping = cloud.addSource(TextureKind::Droplet, Vec3(0.1, -0.001, 0.0), Vec3(0, 1.5, 0), 0.0);
+  auto alive = [&](std::uint64_t id) {
+    for (auto i : cloud.id)
+      if (i == id) return true;
+    return false;
+  };
+  const double dt = 1e-3;
+  int step = 0;
+  for (; step < 19; ++step) cloud.step(flow, step * dt, dt);
+  EXPECT_TRUE(alive(sinking));  // still within the 0.02 s grace
+  EXPECT_TRUE(alive(leaping));
+  cloud.step(flow, step * dt, dt), ++step;
+  cloud.step(flow, step * dt, dt), ++step;
+  EXPECT_FALSE(alive(sinking));  // absorbed at age 0.02 s
+  EXPECT_EQ(cloud.tally().absorbed, 1);
+  // The leaping droplet reached the air (armed); it falls back and is absorbed the step it re-enters the water.
+  int reentered = -1;
+  for (; step < 1000 && alive(leaping); ++step) {
+    const double y = cloud.position[0][1];
+    if (y < 0.0 && reentered < 0) reentered = step;
+    cloud.step(flow, step * dt, dt);
+  }
+  ASSERT_GE(reentered, 0);
+  EXPECT_FALSE(alive(leaping));
+  EXPECT_EQ(step, reentered + 1);
+  EXPECT_EQ(cloud.tally().absorbed, 2);
 }

@@ -36,6 +36,7 @@ void TextureCloud::append(TextureKind k, const Vec3& x, const Vec3& u, double d,
   birth_time.push_back(t);
   initial_volume.push_back(v0);
   shed.push_back(0);
+  armed.push_back(0);
 }
 
 std::uint64_t TextureCloud::addParticle(TextureKind k, const Vec3& x, const Vec3& u, double d, double t) {
@@ -67,12 +68,13 @@ void TextureCloud::step(const FlowField& flow, double t, double dt) {
       fate[i] = static_cast<char>(Fate::LeftDomain);
       continue;
     }
-    if (in_liquid && f.liquid_fraction < 0.5) {
-      fate[i] = static_cast<char>(Fate::Surfaced);
-      continue;
-    }
-    if (!in_liquid && f.liquid_fraction > 0.5) {
-      fate[i] = static_cast<char>(Fate::Absorbed);
+    // In its carrier (water for bubbles, air for droplets) a particle is armed; out of it, an armed particle (or
+    // one past the birth grace) has surfaced or been absorbed. See texture_cloud.hpp.
+    const bool in_carrier = in_liquid ? f.liquid_fraction >= 0.5 : f.liquid_fraction <= 0.5;
+    if (in_carrier) {
+      armed[i] = 1;
+    } else if (armed[i] || t - birth_time[i] >= params_.birth_grace) {
+      fate[i] = static_cast<char>(in_liquid ? Fate::Surfaced : Fate::Absorbed);
       continue;
     }
     CounterRng rng(params_.seed, id[i], static_cast<std::uint64_t>(step_), RandomStream::Fluctuation);
@@ -118,6 +120,7 @@ void TextureCloud::shedFromSources(double t_end, std::vector<char>& remove) {
       // Copies: append() may reallocate the arrays.
       const Vec3 x = position[i], u = velocity[i];
       append(shedKind(kind[i]), x, u, sp.fine_diameter, emissionTime(sp, birth_time[i], j), v_rep);
+      armed.back() = armed[i];  // born where its source is: in the carrier if the source has been
       remove.push_back(0);
       tally_.shed_volume += v_rep;
     }
@@ -133,7 +136,7 @@ void TextureCloud::shedFromSources(double t_end, std::vector<char>& remove) {
 
 void TextureCloud::erase(const std::vector<char>& remove) {
   eraseMarked(remove, position, velocity, fluctuation, previous_mean, diameter, kind, id, birth_time, initial_volume,
-              shed);
+              shed, armed);
 }
 
 }  // namespace mistfall

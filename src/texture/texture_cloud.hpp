@@ -2,8 +2,13 @@
 // Each step (TextureCloud::step):
 //   1. every particle (OpenMP-parallel, each with its own counter-based random stream): sample the carrying
 //      fluid (flow_field.hpp), advance the fluctuation state (turbulent_fluctuation.hpp), move by eq. (18)-(19)
-//      (particle_motion.hpp); a particle that left the grid, a droplet or mist that entered the water and a bubble
-//      or micro-bubble that reached the water surface (liquid fraction below / above 1/2) is removed;
+//      (particle_motion.hpp); a particle that left the grid is removed, and so is a droplet or mist particle that
+//      entered the water (liquid fraction above 1/2) or a bubble or micro-bubble that reached the water surface
+//      (below 1/2) -- once it is *armed*: it has been in its carrying phase at least once, or is older than the
+//      birth grace. A source is born where the MPS particle was classified isolated, and the coarse grids still
+//      carry that particle's own footprint and its neighbours' (a droplet just torn from the surface reads as
+//      water at a third of its births in the dam-break smoke run), so the classifier's judgement is trusted until
+//      the particle has left that footprint; fine particles inherit their source's state;
 //   2. the sources shed the representatives now due (source_shedding.hpp), in particle order, and a spent source
 //      is removed.
 // Ids are handed out in a fixed order (sources as spawned, representatives in shedding order), and the random
@@ -27,6 +32,7 @@ struct TextureParameters {
   FluctuationParameters fluctuation;
   double added_mass = 0.5;      // C_M of eq. (18)
   double source_diameter = 0.0; // d_0 [m] of a new source (the MPS particle size)
+  double birth_grace = 0.02;    // [s] a particle never yet in its carrying phase is not removed before this age
   double width = 0.1;           // extent across the fall [m]: a 2D run's sources start at z in [-width/2, width/2]
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);
   double liquid_density = 1000.0, gas_density = 1.2;                 // [kg/m^3]
@@ -57,6 +63,7 @@ class TextureCloud {
   std::vector<double> birth_time;      // [s]
   std::vector<double> initial_volume;  // V_0 of a source [m^3] (a fine particle: its representative volume)
   std::vector<std::int32_t> shed;      // representatives shed so far (sources)
+  std::vector<char> armed;             // has been in its carrying phase (or is past the birth grace)
 
   std::size_t size() const { return position.size(); }
   std::array<std::int64_t, kTextureKinds> counts() const;

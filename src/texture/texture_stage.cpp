@@ -18,6 +18,7 @@ TextureParameters textureParametersOf(const CaseConfig& c) {
   p.fluctuation.ds = c.numerics.particle_spacing;
   p.added_mass = t.added_mass;
   p.source_diameter = t.source_diameter;
+  p.birth_grace = t.birth_grace;
   p.width = t.width;
   p.gravity = Vec3(c.physics.gravity[0], c.physics.gravity[1], c.physics.gravity[2]);
   p.liquid_density = c.physics.liquid.density;
