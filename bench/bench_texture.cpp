@@ -37,7 +37,8 @@ void textureSpread(benchmark::State& bench) {
   for (auto _ : bench) {
     TextureCloud cloud(p);
     for (int i = 0; i < kParticles; ++i)
-      cloud.addParticle(bubbles ? TextureKind::MicroBubble : TextureKind::Mist, Vec3::Zero(), Vec3::Zero(), 7.5e-5, 0.0);
+      cloud.addParticle(bubbles ? TextureKind::MicroBubble : TextureKind::Mist, Vec3::Zero(), Vec3::Zero(), 7.5e-5,
+                        0.0);
     const auto start = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) cloud.step(flow, s * dt, dt);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

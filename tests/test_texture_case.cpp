@@ -55,7 +55,8 @@ TEST(TextureCase, BadKeysNameKeyValueAndRange) {
   const Bad cases[] = {
       {"seed = -1", "texture.seed = -1 is out of range; allowed [0, 2147483647]"},
       {"fine_diameter = 0", "texture.fine_diameter = 0 is out of range; allowed (0, 0.01]"},
-      {"representatives_per_source = 0", "texture.representatives_per_source = 0 is out of range; allowed [1, 1000000]"},
+      {"representatives_per_source = 0",
+       "texture.representatives_per_source = 0 is out of range; allowed [1, 1000000]"},
       {"representative_ratio = 2", "texture.representative_ratio = 2 is out of range; allowed (0, 1]"},
       {"source_diameter = 1e-5", "texture.source_diameter = 1e-5 is out of range; allowed (7.5e-5, 1]"},
       {"source_lifetime = 0", "texture.source_lifetime = 0 is out of range; allowed (0, 1000]"},

@@ -48,8 +48,10 @@ void writeFields(const fs::path& file, double time) {
   g.dims = {11, 11, 1};
   g.time = time;
   const std::size_t n = g.nodeCount();
-  GridArray gas_u{"gas_velocity", 3, std::vector<double>(3 * n, 0.0)}, liquid_u{"liquid_velocity", 3, std::vector<double>(3 * n, 0.0)};
-  GridArray gas_k{"gas_sps_k", 1, std::vector<double>(n, 1e-3)}, liquid_k{"liquid_sps_k", 1, std::vector<double>(n, 1e-4)};
+  GridArray gas_u{"gas_velocity", 3, std::vector<double>(3 * n, 0.0)};
+  GridArray liquid_u{"liquid_velocity", 3, std::vector<double>(3 * n, 0.0)};
+  GridArray gas_k{"gas_sps_k", 1, std::vector<double>(n, 1e-3)};
+  GridArray liquid_k{"liquid_sps_k", 1, std::vector<double>(n, 1e-4)};
   GridArray gas_c{"gas_coverage", 1, std::vector<double>(n)}, liquid_c{"liquid_coverage", 1, std::vector<double>(n)};
   for (std::size_t i = 0; i < n; ++i) {
     const bool air = (i / 11) * 0.1 > 0.5;

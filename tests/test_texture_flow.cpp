@@ -84,7 +84,8 @@ TEST(TextureFlow, OutsideTheGridIsReported) {
 }
 
 TEST(TextureFlow, TrilinearIn3D) {
-  // 3 x 4 x 5 nodes; liquid everywhere with velocity (x + 2y - z, 4z, 1) and k = 1 + x y z (trilinear, so interpolation is exact).
+  // 3 x 4 x 5 nodes; liquid everywhere with velocity (x + 2y - z, 4z, 1) and k = 1 + x y z (trilinear, so the
+  // interpolation is exact).
   auto g = std::make_shared<ImageData>();
   g->origin = {-0.2, 0.1, 0.3};
   g->spacing = {0.1, 0.05, 0.2};

@@ -119,7 +119,7 @@ struct TextureConfig {
   FluctuationModel fluctuation = FluctuationModel::Redrawn;
   double langevin_time_scale = 0.48;         // C_L in T_L = C_L Ds / (Ce sqrt(k))
   double time_step = 1.0e-3;                 // [s] texture step between frames
-  double match_radius = 1.0;                 // / l0: an isolated particle this close to last frame's prediction is the same
+  double match_radius = 1.0;                 // [l0] isolated particles this close between frames are the same one
   double birth_grace = 0.02;                 // [s] a particle never yet in its carrying phase is kept this long
 };
 

@@ -7,8 +7,8 @@
 //      (below 1/2) -- once it is *armed*: it has been in its carrying phase at least once, or is older than the
 //      birth grace. A source is born where the MPS particle was classified isolated, and the coarse grids still
 //      carry that particle's own footprint and its neighbours' (in the dam-break smoke run of docs/texture.md,
-//      32 of 78 isolated particles read as water at their own position), so the classifier's judgement is trusted until
-//      the particle has left that footprint; fine particles inherit their source's state;
+//      32 of 78 isolated particles read as water at their own position), so the classifier's judgement is
+//      trusted until the particle has left that footprint; fine particles inherit their source's state;
 //   2. the sources shed the representatives now due (source_shedding.hpp), in particle order, and a spent source
 //      is removed.
 // Ids are handed out in a fixed order (sources as spawned, representatives in shedding order), and the random
