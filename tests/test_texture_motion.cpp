@@ -57,7 +57,10 @@ TEST(TextureMotion, MistReachesTerminalVelocityInStillAir) {
   const double expected = analyticTerminalSpeed(1000.0, 1.2, 1.5e-5);  // about 0.16 m/s downwards
   const double v = releasedVelocity(TextureKind::Mist, 1e-3, 400);     // 0.4 s, over 20 relaxation times
   EXPECT_LT(v, 0.0);
-  EXPECT_NEAR(-v, expected, 0.01 * expected) << "analytic " << expected;
+  EXPECT_NEAR(-v, expected, 0.01 * expected) << "analytic " << expected;  // the 1 % asked for
+  // The exponential step's fixed point is the terminal velocity itself, so hold it far tighter: a 1 % tolerance
+  // would let a drag correction of 0.16 instead of 0.15 Re^0.687 pass (0.7 % here).
+  EXPECT_NEAR(-v, expected, 1e-6 * expected);
   // The result does not hinge on the step: a 10x coarser step lands on the same velocity.
   EXPECT_NEAR(releasedVelocity(TextureKind::Mist, 1e-2, 40), v, 1e-3 * expected);
 }
@@ -68,6 +71,7 @@ TEST(TextureMotion, MicroBubbleReachesTerminalVelocityInStillWater) {
   const double v = releasedVelocity(TextureKind::MicroBubble, 1e-3, 20);
   EXPECT_GT(v, 0.0);
   EXPECT_NEAR(v, expected, 0.01 * expected) << "analytic " << expected;
+  EXPECT_NEAR(v, expected, 1e-6 * expected);
 }
 
 TEST(TextureMotion, ExponentialStepIsExactForStokesDrag) {
