@@ -86,3 +86,18 @@ TEST(TextureMotion, ExponentialStepIsExactForStokesDrag) {
   EXPECT_NEAR(one.velocity[0], 1e-9 * std::exp(-3.0), 1e-9 * 1e-7);
   EXPECT_NEAR(one.displacement[0], 1e-9 * tau * (1 - std::exp(-3.0)), 1e-9 * tau * 1e-7);
 }
+
+TEST(TextureMotion, AddedMassSetsTheBubblesStartingAcceleration) {
+  // Released at rest, before drag acts (h << tau): du_p/dt = (rho_p/rho_f - 1) g / (rho_p/rho_f + C_M), eq. (18).
+  // With C_M = 0.5 a micro-bubble in water starts upwards at about 2 g (without added mass it would be 832 g).
+  TextureParameters params;
+  TextureCloud cloud(params);
+  cloud.addParticle(TextureKind::MicroBubble, Vec3::Zero(), Vec3::Zero(), kD, 0.0);
+  const UniformFlow flow = stillFluids();
+  const double h = 1e-8;  // tau ~ 1.5e-4 s
+  cloud.step(flow, 0.0, h);
+  const double ratio = 1.2 / 1000.0;
+  const double expected = (1.0 - ratio) * kG / (ratio + 0.5);
+  EXPECT_NEAR(cloud.velocity[0][1] / h, expected, 1e-3 * expected);
+  EXPECT_NEAR(cloud.position[0][1], 0.5 * expected * h * h, 1e-3 * 0.5 * expected * h * h);
+}
