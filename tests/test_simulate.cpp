@@ -34,6 +34,9 @@ namespace {
 
 using test_support::freshDir;
 using test_support::slurp;
+using test_support::CliResult;
+using test_support::quoted;
+using test_support::runCli;
 
 fs::path writeCase(const fs::path& dir, const std::string& name, const std::string& text) {
   const fs::path file = dir / name;

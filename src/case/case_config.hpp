@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "classify/classification_parameters.hpp"
+#include "texture/fluctuation_model.hpp"
 
 namespace mistfall {
 
@@ -117,6 +118,23 @@ struct OutputConfig {
   double field_spacing = 0.0;  // [m] grid of the flow fields written per frame (fields/*.vti); 0 = none
 };
 
+// The sub-particle-scale texture stage (`mistfall texture`, src/texture, docs/texture.md).
+struct TextureConfig {
+  int seed = 1;                              // seeds every random stream of the texture
+  double fine_diameter = 7.5e-5;             // d_m = d_b of mist and micro-bubbles [m]
+  int representatives_per_source = 500;      // N, representatives shed per source
+  double representative_ratio = 1.0 / 250;   // gamma_rm: each representative stands for 1/gamma_rm fine particles
+  double source_diameter = 0.0;              // d_0 of a new source [m]; 0 = numerics.particle_spacing
+  double source_lifetime = 0.5;              // [s] over which a source sheds its N representatives
+  double added_mass = 0.5;                   // C_M of eq. (18)
+  double width = 0.1;                        // extent across the fall [m] (2D runs: z of new sources)
+  FluctuationModel fluctuation = FluctuationModel::Redrawn;
+  double langevin_time_scale = 0.48;         // C_L in T_L = C_L Ds / (Ce sqrt(k))
+  double time_step = 1.0e-3;                 // [s] texture step between frames
+  double match_radius = 1.0;                 // [l0] isolated particles this close between frames are the same one
+  double birth_grace = 0.02;                 // [s] a particle never yet in its carrying phase is kept this long
+};
+
 struct CaseConfig {
   std::string name;
   int dimension = 2;
@@ -128,6 +146,7 @@ struct CaseConfig {
   NumericsConfig numerics;
   OutputConfig output;
   ClassificationParameters classify;  // [classify]: the six-category classification (src/classify)
+  TextureConfig texture;
 };
 
 const char* toString(PressureSolverKind k);

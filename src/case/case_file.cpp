@@ -97,7 +97,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const Reader rd(source_name);
   CaseConfig c;
   rd.checkKeys(root, "",
-               {"case", "domain", "physics", "numerics", "output", "classify", "region", "inflow", "outflow"});
+               {"case", "domain", "physics", "numerics", "output", "classify", "texture", "region", "inflow", "outflow"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");
@@ -201,6 +201,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
+  detail::readTexture(rd, root, c);
   return c;
 }
 

@@ -84,4 +84,7 @@ class Reader {
 // The [[inflow]] and [[outflow]] tables (case_boundaries.cpp); needs the domain, gravity and regions already read.
 void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c);
 
+// The optional [texture] table (case_texture.cpp); needs [numerics] and [output] already read.
+void readTexture(const Reader& rd, const toml::table& root, CaseConfig& c);
+
 }  // namespace mistfall::detail

@@ -6,6 +6,7 @@
 
 #include "cli/classify.hpp"
 #include "cli/simulate.hpp"
+#include "cli/texture_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"mistfall — physically based waterfall animation from a gas-liquid two-phase MPS simulation"};
@@ -44,6 +45,21 @@ int main(int argc, char** argv) {
   classify->add_option("--threads,-j", cls.threads, "OpenMP threads (default: all cores); results do not depend on N")
       ->check(CLI::Range(1, 4096));
   classify->add_flag("--plain-progress", cls.force_plain_progress, "Log progress lines instead of a progress bar");
+  mistfall::TextureOptions tex;
+  auto* texture = app.add_subcommand(
+      "texture",
+      "Sub-particle-scale texture of a classified run: droplet/bubble sources shedding mist and micro-bubbles, "
+      "moved by eq. (18) through the saved flow fields; writes RUN_DIR/texture/ (.bin, .vtp, .pvd, texture.csv)");
+  texture->add_option("run_dir", tex.run_dir,
+                      "Run directory of `mistfall simulate` (with output.field_spacing > 0), classified by "
+                      "`mistfall classify`; parameters from the [texture] table of its case.toml")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  texture->add_option("--threads,-j", tex.threads, "OpenMP threads (default: all cores); results do not depend on N")
+      ->check(CLI::Range(1, 4096));
+  texture->add_flag("--ascii", tex.ascii, "Write ASCII VTK files instead of binary");
+  texture->add_flag("--overwrite", tex.overwrite, "Replace an existing RUN_DIR/texture");
+  texture->add_flag("--plain-progress", tex.force_plain_progress, "Log progress lines instead of a progress bar");
 
   // Command-line errors are bad input: exit code 1 like every other input error (CLI11 would use 100+).
   try {
@@ -67,5 +83,6 @@ int main(int argc, char** argv) {
     return mistfall::runSimulate(sim);
   }
   if (classify->parsed()) return mistfall::runClassify(cls);
+  if (texture->parsed()) return mistfall::runTexture(tex);
   return 0;
 }

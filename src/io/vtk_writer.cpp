@@ -22,13 +22,8 @@ static_assert(std::endian::native == std::endian::little, "the VTK writer assume
 
 namespace {
 
-using ArrayData = std::variant<std::vector<double>, std::vector<std::uint8_t>, std::vector<std::int64_t>>;
-
-struct Array {
-  std::string name;
-  int components = 1;
-  ArrayData data;
-};
+using ArrayData = VtpArrayData;
+using Array = VtpArray;
 
 const char* vtkTypeName(const ArrayData& d) {
   switch (d.index()) {
@@ -151,75 +146,43 @@ std::vector<T> decodeArray(const std::filesystem::path& file, const std::string&
   return out;
 }
 
-}  // namespace
+// Rethrows `e` as a "malformed VTK file" error unless its message already names `file`.
+[[noreturn]] void rethrowNamingFile(const std::filesystem::path& file, const std::runtime_error& e) {
+  const std::string msg = e.what();
+  if (msg.find(file.string()) != std::string::npos) throw e;
+  fail(file, msg);
+}
 
-template <int D>
-void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii,
-              const std::vector<std::uint8_t>* category) {
-  if (category && category->size() != p.size())
-    throw std::invalid_argument("writeVtp: " + std::to_string(category->size()) + " categories for " +
-                                std::to_string(p.size()) + " particles (" + file.string() + ")");
-  const std::size_t n = p.size();
-  std::vector<std::int64_t> connectivity(n), offsets(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    connectivity[i] = static_cast<std::int64_t>(i);
-    offsets[i] = static_cast<std::int64_t>(i + 1);
+// A .vtp file read into memory with its DataArray headers indexed by name.
+struct VtpDocument {
+  std::filesystem::path file;
+  std::string doc;
+  std::string_view appended;
+  std::map<std::string, ArrayInfo> arrays;
+  std::size_t n = 0;  // points
+
+  const ArrayInfo& get(const std::string& name, int components) const {
+    auto it = arrays.find(name);
+    if (it == arrays.end()) fail(file, "missing array '" + name + "'");
+    if (it->second.components != components) fail(file, "array '" + name + "' has the wrong component count");
+    if (it->second.appended && appended.empty()) fail(file, "array '" + name + "' refers to missing appended data");
+    return it->second;
   }
-  std::vector<Array> point_data = {
-      {"phase", 1, asBytes(p.phase)},
-      {"kind", 1, asBytes(p.kind)},
-      {"enclosed", 1, asBytes(p.enclosed)},
-      {"velocity", 3, padTo3<D>(p.velocity)},
-      {"pressure", 1, p.pressure},
-      {"number_density", 1, p.number_density},
-  };
-  if (category) point_data.push_back({"category", 1, *category});
-  // "TIME" as asked for by the pipeline; "TimeValue" is the name VTK/ParaView readers recognise as time.
-  // Field data stays inline ascii (17 digits, exact) in both modes.
-  const std::vector<Array> field_data = {{"TIME", 1, std::vector<double>{time}},
-                                         {"TimeValue", 1, std::vector<double>{time}}};
+  template <class T>
+  std::vector<T> decode(const std::string& name, int components, std::size_t values) const {
+    return decodeArray<T>(file, name, get(name, components), appended, values);
+  }
+};
 
-  writeFileAtomically(file, [&](std::ostream& os) {
-    std::string blob;
-    os << "<?xml version=\"1.0\"?>\n"
-       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-       << "  <PolyData>\n    <FieldData>\n";
-    for (const auto& a : field_data) writeArray(os, a, true, blob, "      ", true);
-    os << "    </FieldData>\n"
-       << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
-       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-       << "      <PointData Scalars=\"pressure\" Vectors=\"velocity\">\n";
-    for (const auto& a : point_data) writeArray(os, a, ascii, blob, "        ", false);
-    os << "      </PointData>\n      <Points>\n";
-    writeArray(os, {"Points", 3, padTo3<D>(p.position)}, ascii, blob, "        ", false);
-    os << "      </Points>\n      <Verts>\n";
-    writeArray(os, {"connectivity", 1, std::move(connectivity)}, ascii, blob, "        ", false);
-    writeArray(os, {"offsets", 1, std::move(offsets)}, ascii, blob, "        ", false);
-    os << "      </Verts>\n    </Piece>\n  </PolyData>\n";
-    if (!ascii) {
-      os << "  <AppendedData encoding=\"raw\">\n   _";
-      os.write(blob.data(), static_cast<std::streamsize>(blob.size()));
-      os << "\n  </AppendedData>\n";
-    }
-    os << "</VTKFile>\n";
-  });
-}
-
-template <int D>
-Particles<D> readVtp(const std::filesystem::path& file, double* time) {
-  VtpFrameInfo info;
-  Particles<D> p = readVtp<D>(file, info);
-  if (time) *time = info.time;
-  return p;
-}
-
-template <int D>
-Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
+// Reads and indexes `file`; every error is a std::runtime_error naming the path.
+void parseVtp(const std::filesystem::path& file, VtpDocument& d) {
+  d.file = file;
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open VTK file '" + file.string() + "'");
-  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  d.doc.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw std::runtime_error("error reading VTK file '" + file.string() + "'");
 
+  const std::string& doc = d.doc;
   try {
     // Split the XML header from the raw appended bytes (which may contain anything, including '<').
     std::string_view header(doc);
@@ -280,29 +243,101 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
       }
       arrays[tag->attr("Name")] = info;
     }
-    auto get = [&](const std::string& name, int components) -> const ArrayInfo& {
-      auto it = arrays.find(name);
-      if (it == arrays.end()) fail(file, "missing array '" + name + "'");
-      if (it->second.components != components) fail(file, "array '" + name + "' has the wrong component count");
-      if (it->second.appended && appended.empty()) fail(file, "array '" + name + "' refers to missing appended data");
-      return it->second;
-    };
+    d.appended = appended;
+    d.arrays = std::move(arrays);
+    d.n = n;
+  } catch (const std::runtime_error& e) {
+    rethrowNamingFile(file, e);
+  }
+}
 
-    const auto pos3 = decodeArray<double>(file, "Points", get("Points", 3), appended, 3 * n);
-    const auto vel3 = decodeArray<double>(file, "velocity", get("velocity", 3), appended, 3 * n);
-    const auto pressure = decodeArray<double>(file, "pressure", get("pressure", 1), appended, n);
-    const auto density = decodeArray<double>(file, "number_density", get("number_density", 1), appended, n);
-    const auto kind = decodeArray<std::uint8_t>(file, "kind", get("kind", 1), appended, n);
-    const auto phase = decodeArray<std::uint8_t>(file, "phase", get("phase", 1), appended, n);
+}  // namespace
+
+template <int D>
+void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double time, bool ascii,
+              const std::vector<std::uint8_t>* category) {
+  if (category && category->size() != p.size())
+    throw std::invalid_argument("writeVtp: " + std::to_string(category->size()) + " categories for " +
+                                std::to_string(p.size()) + " particles (" + file.string() + ")");
+  std::vector<VtpArray> point_data = {
+      {"phase", 1, asBytes(p.phase)},
+      {"kind", 1, asBytes(p.kind)},
+      {"enclosed", 1, asBytes(p.enclosed)},
+      {"velocity", 3, padTo3<D>(p.velocity)},
+      {"pressure", 1, p.pressure},
+      {"number_density", 1, p.number_density},
+  };
+  if (category) point_data.push_back({"category", 1, *category});
+  writePointsVtp(file, padTo3<D>(p.position), point_data, time, ascii, "pressure");
+}
+
+void writePointsVtp(const std::filesystem::path& file, const std::vector<double>& points,
+                    const std::vector<VtpArray>& point_data, double time, bool ascii, const std::string& scalars) {
+  const std::size_t n = points.size() / 3;
+  std::vector<std::int64_t> connectivity(n), offsets(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    connectivity[i] = static_cast<std::int64_t>(i);
+    offsets[i] = static_cast<std::int64_t>(i + 1);
+  }
+  // "TIME" as asked for by the pipeline; "TimeValue" is the name VTK/ParaView readers recognise as time.
+  // Field data stays inline ascii (17 digits, exact) in both modes.
+  const std::vector<VtpArray> field_data = {{"TIME", 1, std::vector<double>{time}},
+                                            {"TimeValue", 1, std::vector<double>{time}}};
+
+  writeFileAtomically(file, [&](std::ostream& os) {
+    std::string blob;
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+       << "  <PolyData>\n    <FieldData>\n";
+    for (const auto& a : field_data) writeArray(os, a, true, blob, "      ", true);
+    os << "    </FieldData>\n"
+       << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
+       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+       << "      <PointData Scalars=\"" << scalars << "\" Vectors=\"velocity\">\n";
+    for (const auto& a : point_data) writeArray(os, a, ascii, blob, "        ", false);
+    os << "      </PointData>\n      <Points>\n";
+    writeArray(os, {"Points", 3, points}, ascii, blob, "        ", false);
+    os << "      </Points>\n      <Verts>\n";
+    writeArray(os, {"connectivity", 1, std::move(connectivity)}, ascii, blob, "        ", false);
+    writeArray(os, {"offsets", 1, std::move(offsets)}, ascii, blob, "        ", false);
+    os << "      </Verts>\n    </Piece>\n  </PolyData>\n";
+    if (!ascii) {
+      os << "  <AppendedData encoding=\"raw\">\n   _";
+      os.write(blob.data(), static_cast<std::streamsize>(blob.size()));
+      os << "\n  </AppendedData>\n";
+    }
+    os << "</VTKFile>\n";
+  });
+}
+
+template <int D>
+Particles<D> readVtp(const std::filesystem::path& file, double* time) {
+  VtpFrameInfo info;
+  Particles<D> p = readVtp<D>(file, info);
+  if (time) *time = info.time;
+  return p;
+}
+
+template <int D>
+Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
+  VtpDocument d;
+  parseVtp(file, d);
+  const std::size_t n = d.n;
+  try {
+    const auto pos3 = d.decode<double>("Points", 3, 3 * n);
+    const auto vel3 = d.decode<double>("velocity", 3, 3 * n);
+    const auto pressure = d.decode<double>("pressure", 1, n);
+    const auto density = d.decode<double>("number_density", 1, n);
+    const auto kind = d.decode<std::uint8_t>("kind", 1, n);
+    const auto phase = d.decode<std::uint8_t>("phase", 1, n);
     // "enclosed" (delta_gl) is absent from frames written before it existed: read as 0.
-    const auto enclosed = arrays.count("enclosed")
-                              ? decodeArray<std::uint8_t>(file, "enclosed", get("enclosed", 1), appended, n)
+    const auto enclosed = d.arrays.count("enclosed")
+                              ? d.decode<std::uint8_t>("enclosed", 1, n)
                               : std::vector<std::uint8_t>(n, 0);
-    frame.category = arrays.count("category")
-                         ? decodeArray<std::uint8_t>(file, "category", get("category", 1), appended, n)
-                         : std::vector<std::uint8_t>();
-    decodeArray<std::int64_t>(file, "connectivity", get("connectivity", 1), appended, n);
-    decodeArray<std::int64_t>(file, "offsets", get("offsets", 1), appended, n);
+    frame.category = d.arrays.count("category") ? d.decode<std::uint8_t>("category", 1, n)
+                                                 : std::vector<std::uint8_t>();
+    d.decode<std::int64_t>("connectivity", 1, n);
+    d.decode<std::int64_t>("offsets", 1, n);
 
     Particles<D> p;
     p.position.resize(n);
@@ -322,20 +357,34 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
       p.kind[i] = static_cast<ParticleKind>(kind[i]);
       p.phase[i] = static_cast<Phase>(phase[i]);
     }
-    frame.ascii = appended.empty();
+    frame.ascii = d.appended.empty();
     frame.time = 0.0;
     for (const char* name : {"TIME", "TimeValue"}) {
-      if (arrays.count(name)) {
-        frame.time = decodeArray<double>(file, name, get(name, 1), appended, 1)[0];
+      if (d.arrays.count(name)) {
+        frame.time = d.decode<double>(name, 1, 1)[0];
         break;
       }
     }
     return p;
   } catch (const std::runtime_error& e) {
-    const std::string msg = e.what();
-    if (msg.find(file.string()) != std::string::npos) throw;
-    fail(file, msg);
+    rethrowNamingFile(file, e);
   }
+}
+
+std::optional<std::vector<std::uint8_t>> readVtpByteArray(const std::filesystem::path& file, const std::string& name) {
+  VtpDocument d;
+  parseVtp(file, d);
+  const auto it = d.arrays.find(name);
+  if (it == d.arrays.end()) return std::nullopt;
+  if (it->second.type != "Int64") return d.decode<std::uint8_t>(name, 1, d.n);
+  // An Int64 array of small values is accepted too.
+  std::vector<std::uint8_t> out(d.n);
+  const auto wide = d.decode<std::int64_t>(name, 1, d.n);
+  for (std::size_t i = 0; i < d.n; ++i) {
+    if (wide[i] < 0 || wide[i] > 255) fail(file, "array '" + name + "' has a value outside [0, 255]");
+    out[i] = static_cast<std::uint8_t>(wide[i]);
+  }
+  return out;
 }
 
 template void writeVtp<2>(const std::filesystem::path&, const Particles<2>&, double, bool,

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
 #include <vector>
 
 #include "mps/particles.hpp"
@@ -36,5 +39,21 @@ Particles<D> readVtp(const std::filesystem::path& file, double* time = nullptr);
 // The same, also returning the format and the category array.
 template <int D>
 Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& info);
+// One point-data array of a .vtp: `components` values per point (Float64, UInt8 or Int64).
+using VtpArrayData = std::variant<std::vector<double>, std::vector<std::uint8_t>, std::vector<std::int64_t>>;
+struct VtpArray {
+  std::string name;
+  int components = 1;
+  VtpArrayData data;
+};
+
+// Any point cloud as a .vtp like writeVtp's (atomically): `points` x, y, z per point, the arrays as point data
+// (`scalars` names the default one), the time as FieldData TIME / TimeValue.
+void writePointsVtp(const std::filesystem::path& file, const std::vector<double>& points,
+                    const std::vector<VtpArray>& point_data, double time, bool ascii, const std::string& scalars);
+
+// The UInt8 (or Int64, values in [0, 255]) point array `name` of a .vtp (e.g. the classifier's "category"), or
+// nullopt when the file has no such array. Throws std::runtime_error naming the path on malformed input.
+std::optional<std::vector<std::uint8_t>> readVtpByteArray(const std::filesystem::path& file, const std::string& name);
 
 }  // namespace mistfall

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mps/erase_marked.hpp"
 #include "mps/vector.hpp"
 
 namespace mistfall {
@@ -49,25 +50,7 @@ struct Particles {
   }
   // Removes the particles with remove[i] != 0 from every array, keeping the order of the others.
   void erase(const std::vector<char>& remove) {
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < size(); ++i) {
-      if (remove[i]) continue;
-      position[kept] = position[i];
-      velocity[kept] = velocity[i];
-      pressure[kept] = pressure[i];
-      number_density[kept] = number_density[i];
-      kind[kept] = kind[i];
-      phase[kept] = phase[i];
-      enclosed[kept] = enclosed[i];
-      ++kept;
-    }
-    position.resize(kept);
-    velocity.resize(kept);
-    pressure.resize(kept);
-    number_density.resize(kept);
-    kind.resize(kept);
-    phase.resize(kept);
-    enclosed.resize(kept);
+    eraseMarked(remove, position, velocity, pressure, number_density, kind, phase, enclosed);
   }
   std::size_t count(ParticleKind k, Phase ph) const {
     std::size_t c = 0;
