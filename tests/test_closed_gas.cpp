@@ -169,14 +169,16 @@ TEST(ClosedGas, VoidDrawsTheGasInGently) {
 
 // A pocket of gas in the water against the floor and the side wall: in an open gas domain it borders walls, so it
 // is not enclosed (it would be open air inside the pool); in a closed one it is entrained gas. The air above, which
-// touches the water, the walls and the lid, is open in both.
+// touches the water, the walls and the lid, is open in both, even when the size limit exceeds it (the largest
+// region is never a pocket).
 TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
-  for (const bool closed : {false, true}) {
+  for (const std::size_t limit : {std::size_t{0}, std::size_t{6}, std::size_t{1000000}}) {
+    const bool closed = limit > 0;
     AirBox box(airBoxCase(closed ? "closed" : "open", false, true));
     const auto& p = box.state.particles;
     const auto& nl = box.solver->currentNeighbours();
     GasRegions regions;
-    findGasRegions<2>(p, nl, box.solver->constants().re_number_density, 0.005, regions, nullptr, closed ? 6 : 0);
+    findGasRegions<2>(p, nl, box.solver->constants().re_number_density, 0.005, regions, nullptr, limit);
     std::size_t pocket = 0, air = 0, pocket_enclosed = 0, air_enclosed = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!isGas(p.kind[i], p.phase[i])) continue;
@@ -185,8 +187,8 @@ TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
       (in_pocket ? pocket_enclosed : air_enclosed) += regions.enclosed_particle[i];
     }
     ASSERT_EQ(pocket, 2u);
-    EXPECT_EQ(pocket_enclosed, closed ? 2u : 0u) << (closed ? "closed" : "open");
-    EXPECT_EQ(air_enclosed, 0u) << (closed ? "closed" : "open");
+    EXPECT_EQ(pocket_enclosed, closed ? 2u : 0u) << "limit " << limit;
+    EXPECT_EQ(air_enclosed, 0u) << "limit " << limit;
     EXPECT_GT(air, 100u);
   }
 }

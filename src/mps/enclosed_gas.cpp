@@ -2,6 +2,8 @@
 // in liquid (bubbles, flag delta_gl), and per-bubble statistics. Definitions in enclosed_gas.hpp.
 #include "mps/enclosed_gas.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -116,8 +118,10 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
       ++size[out.region_of[i]];
       wet[out.region_of[i]] |= touches_liquid[i];
     }
+    // The largest region is the box's air itself, never a pocket in the water.
+    const std::size_t largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
     for (std::size_t r = 0; r < size.size(); ++r)
-      if (size[r] < closed_small_region && wet[r]) out.enclosed[r] = 1;
+      if (r != largest && size[r] < closed_small_region && wet[r]) out.enclosed[r] = 1;
   }
 
   out.enclosed_particle.assign(n, 0);

@@ -18,7 +18,7 @@
 //  * In a closed gas domain (numerics.gas_domain = "closed", `closed_small_region` > 0) there is no open space, so
 //    a region of fewer than closed_small_region particles that touches liquid is enclosed whatever else it borders
 //    (walls, or gaps that leave it short of neighbours): a pocket of air dragged into the pool, against its floor or
-//    between sparse water, is entrained gas, not open air.
+//    between sparse water, is entrained gas, not open air. The largest region (the box's air) never is.
 //  * delta_gl (enclosed_particle) is 1 for the gas particles of enclosed regions, 0 otherwise.
 //  * Bubble statistics (enclosed regions only, by region id): particle count N, mean pressure, centroid
 //    (padded with 0 to three components) and size N l0^D (area in 2D, volume in 3D).
