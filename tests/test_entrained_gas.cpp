@@ -11,7 +11,9 @@
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
+#include "mps/bubble_gas_motion.hpp"
 #include "mps/enclosed_gas.hpp"
+#include "mps/neighbor_search.hpp"
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/solver.hpp"
 
@@ -165,4 +167,30 @@ TEST(EntrainedGas, DrawIsUniform) {
   }
   EXPECT_NEAR(sum / n, 0.5, 0.005);
   EXPECT_NEAR(static_cast<double>(below) / n, 0.1, 0.003);
+}
+
+// Gas that has just joined the water (was open, is enclosed now) takes its liquid neighbours' velocity: a gas
+// particle at 10 m/s inside a 7 x 7 patch of water moving at (1, 0) m/s leaves with (1, 0); a lone gas particle far
+// from the water, also flagged, keeps its own; a liquid particle is untouched.
+TEST(EntrainedGas, GasJoiningTheWaterTakesItsVelocity) {
+  const double l0 = 0.01, re = 2.1 * l0;
+  Particles<2> p;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) {
+      const bool centre = i == 3 && j == 3;
+      p.add(Vec<2>(i * l0, j * l0), centre ? Vec<2>(0.0, 10.0) : Vec<2>(1.0, 0.0), ParticleKind::Fluid,
+            centre ? Phase::Gas : Phase::Liquid);
+    }
+  p.add(Vec<2>(0.5, 0.5), Vec<2>(0.0, -3.0), ParticleKind::Fluid, Phase::Gas);
+  const std::size_t centre = 3 * 7 + 3, lone = p.size() - 1;
+  NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.7, 0.7), re);
+  NeighborList nl;
+  search.build(p.position, p.kind, nl);
+  std::vector<char> joined(p.size(), 0);
+  joined[centre] = joined[lone] = 1;
+  adoptLiquidVelocity<2>(p, nl, joined, re);
+  EXPECT_NEAR(p.velocity[centre][0], 1.0, 1e-12);
+  EXPECT_NEAR(p.velocity[centre][1], 0.0, 1e-12);
+  EXPECT_EQ(p.velocity[lone], Vec<2>(0.0, -3.0));
+  EXPECT_EQ(p.velocity[0], Vec<2>(1.0, 0.0));
 }

@@ -52,4 +52,29 @@ void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const Co
     if (roles.enclosed_gas[i]) p.position[i] += dt * (p.velocity[i] - before[i]);
 }
 
+// Gas that has just joined the liquid system (open at the last step, enclosed now: `joined[i]`) takes the
+// w-weighted mean velocity of its liquid neighbours within re: it is carried by the water from now on, and the
+// gas system's velocity it brings (metres per second in a splash) would otherwise enter the water's velocity
+// divergence in the pressure equation as a spike. Particles without liquid neighbours keep their velocity.
+template <int D>
+void adoptLiquidVelocity(Particles<D>& p, const NeighborList& nl, const std::vector<char>& joined, double re) {
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  std::vector<Vec<D>> next(p.velocity.begin(), p.velocity.end());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!joined[i]) continue;
+    Vec<D> sum = Vec<D>::Zero();
+    double total = 0.0;
+    for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+      const auto j = nl.indices[s];
+      if (p.kind[j] != ParticleKind::Fluid || p.phase[j] != Phase::Liquid) continue;
+      const double w = weight((p.position[j] - p.position[i]).norm(), re);
+      sum += w * p.velocity[j];
+      total += w;
+    }
+    if (total > 0.0) next[i] = sum / total;
+  }
+  p.velocity.swap(next);
+}
+
 }  // namespace mistfall

@@ -119,6 +119,12 @@ void MpsSolver<D>::findBubbles() {
     auto& p = state_.particles;
     findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed,
                       closedSmallRegion());
+    // Gas that was open and is enclosed now joins the water's system and is carried by the water.
+    std::vector<char> joined(p.size(), 0);
+    bool any_joined = false;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (regions_.enclosed_particle[i] && !(i < p.enclosed.size() && p.enclosed[i])) joined[i] = 1, any_joined = true;
+    if (any_joined) adoptLiquidVelocity<D>(p, neighbours_, joined, constants_.re_number_density);
     p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
   } else {
