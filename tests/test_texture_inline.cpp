@@ -10,6 +10,7 @@
 
 #include "io/texture_files.hpp"
 #include "support/cli.hpp"
+#include "support/dam_break_case.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
@@ -20,32 +21,10 @@ using test_support::slurp;
 
 namespace {
 
+// The dam break plus a lone air particle in the column (after it: it wins) and a lone water particle in the air;
+// the [texture] table: `texture_extra` appended.
 std::string tinyCase(const std::string& output_extra, const std::string& texture_extra) {
-  return R"([case]
-name = "tiny_texture"
-dimension = 2
-[domain]
-min = [-0.04, -0.04]
-max = [0.34, 0.30]
-[numerics]
-particle_spacing = 0.01
-dt_max = 1.0e-3
-max_escaped_fraction = 0.05
-[output]
-end_time = 0.1
-interval = 0.02
-)" + output_extra + R"(
-[texture]
-representatives_per_source = 40
-source_lifetime = 0.06
-fluctuation = "langevin"
-seed = 7
-)" + texture_extra + R"(
-[[region]]
-name = "column"
-material = "water"
-min = [0.0, 0.0]
-max = [0.1, 0.2]
+  return test_support::damBreakCase(0.1, 0.02, "", output_extra) + R"(
 [[region]]
 name = "bubble"
 material = "gas"
@@ -56,22 +35,12 @@ name = "drop"
 material = "water"
 min = [0.2, 0.2]
 max = [0.21, 0.21]
-[[region]]
-name = "wall_bottom"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.34, 0.0]
-[[region]]
-name = "wall_left"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.0, 0.26]
-[[region]]
-name = "wall_right"
-material = "wall"
-min = [0.3, -0.04]
-max = [0.34, 0.26]
-)";
+[texture]
+representatives_per_source = 40
+source_lifetime = 0.06
+fluctuation = "langevin"
+seed = 7
+)" + texture_extra;
 }
 
 const std::string kInline = "inline = true\n";

@@ -43,7 +43,8 @@ int runTexture(const TextureOptions& o) {
   CaseConfig config;
   std::vector<SavedFrame> frames;
   try {
-    if (!fs::is_directory(o.run_dir)) throw TextureInputError("run directory " + o.run_dir.string() + " does not exist");
+    if (!fs::is_directory(o.run_dir))
+      throw TextureInputError("run directory " + o.run_dir.string() + " does not exist");
     config = loadCaseFile(o.run_dir / "case.toml");
     frames = listSavedFrames(o.run_dir);
     if (frames.empty()) throw TextureInputError("frames.pvd lists no frames");
