@@ -1,5 +1,5 @@
 // The texture inline with `simulate` ([texture] inline = true): the same files as the post-process
-// `mistfall texture RUN_DIR` over the same run, byte for byte; the same cloud on 1 and 2 threads; a resumed run
+// `mistfall texture RUN_DIR` over the same run, byte for byte (binary and ASCII VTK); the same cloud on 1 and 2 threads; a resumed run
 // ends with the same texture as an uninterrupted one; inline without flow grids is refused. The case is a tiny 2D
 // dam break (l0 = 1 cm, 200 water particles) with a lone water particle in the air (a droplet: mist) and a lone
 // air particle in the column (a bubble: micro-bubbles), run for 0.1 s.
@@ -95,6 +95,14 @@ TEST(TextureInline, SimulateWritesTheSameFilesAsThePostProcess) {
   const auto r = runCli("texture " + quoted(run) + " --overwrite --threads 1 --plain-progress");
   ASSERT_EQ(r.code, 0) << r.err;
   expectSameFiles(inline_files, filesOf(run / "texture"), "inline vs post-process");
+
+  // ASCII frames and grids (17 significant digits) read back exactly too.
+  const fs::path ascii = dir / "ascii";
+  ASSERT_EQ(simulate(dir / "case.toml", ascii, 1, "--ascii --until 0.06"), 0);
+  const auto ascii_files = filesOf(ascii / "texture");
+  ASSERT_EQ(ascii_files.size(), 10u);
+  ASSERT_EQ(runCli("texture " + quoted(ascii) + " --overwrite --ascii --threads 1 --plain-progress").code, 0);
+  expectSameFiles(ascii_files, filesOf(ascii / "texture"), "inline vs post-process, ascii");
 }
 
 TEST(TextureInline, SameCloudOnOneAndTwoThreads) {
