@@ -24,6 +24,7 @@
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
 #include "support/cli.hpp"
+#include "support/dam_break_case.hpp"
 #include "support/same_particles.hpp"
 #include "support/scratch.hpp"
 
@@ -32,6 +33,7 @@ using namespace mistfall;
 
 namespace {
 
+using test_support::damBreakCase;
 using test_support::freshDir;
 using test_support::slurp;
 using test_support::CliResult;
@@ -42,55 +44,6 @@ fs::path writeCase(const fs::path& dir, const std::string& name, const std::stri
   const fs::path file = dir / name;
   std::ofstream(file, std::ios::binary) << text;
   return file;
-}
-
-// 2D dam break, l0 = 0.01: a 0.1 x 0.2 column (10 x 20 = 200 fluid particles) in a 0.3 m long tank with
-// 4-layer walls. `numerics_extra` / `output_extra` are appended to those tables.
-std::string damBreakCase(double end_time = 0.1, double interval = 0.02, const std::string& numerics_extra = "") {
-  std::ostringstream s;
-  s << R"([case]
-name = "small_dam_break"
-dimension = 2
-
-[domain]
-min = [-0.04, -0.04]
-max = [0.34, 0.30]
-
-[physics]
-gravity = [0.0, -9.81]
-
-[numerics]
-particle_spacing = 0.01
-dt_max = 1.0e-3
-max_escaped_fraction = 0.05
-)" << numerics_extra
-    << "\n[output]\nend_time = " << end_time << "\ninterval = " << interval << R"(
-
-[[region]]
-name = "column"
-material = "water"
-min = [0.0, 0.0]
-max = [0.1, 0.2]
-
-[[region]]
-name = "wall_bottom"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.34, 0.0]
-
-[[region]]
-name = "wall_left"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.0, 0.26]
-
-[[region]]
-name = "wall_right"
-material = "wall"
-min = [0.3, -0.04]
-max = [0.34, 0.26]
-)";
-  return s.str();
 }
 
 // A 0.1 x 0.1 block of water (100 particles) in a domain without walls whose floor is 0.02 m below the

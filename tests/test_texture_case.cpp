@@ -79,3 +79,19 @@ TEST(TextureCase, BadKeysNameKeyValueAndRange) {
   msg = errorOf(withTexture("width = \"wide\"\n"));
   EXPECT_HAS(msg, "texture.width = \"wide\" has the wrong type (string)");
 }
+
+// texture.inline: off by default; on, it needs the flow grids (output.field_spacing > 0); a boolean.
+TEST(TextureCase, InlineNeedsFlowGrids) {
+  EXPECT_FALSE(parseCase(Parts{}.text(), "cases/x.toml").texture.run_inline);
+  Parts grids;
+  grids.output = "end_time = 1.0\nfield_spacing = 0.05\n";
+  EXPECT_TRUE(parseCase(grids.text() + "[texture]\ninline = true\n", "cases/x.toml").texture.run_inline);
+  EXPECT_FALSE(parseCase(grids.text() + "[texture]\ninline = false\n", "cases/x.toml").texture.run_inline);
+
+  EXPECT_EQ(errorOf(withTexture("inline = true\n")),
+            "cases/x.toml: texture.inline = true needs the flow grids, but output.field_spacing = 0 writes none; "
+            "allowed output.field_spacing > 0 (or texture.inline = false)");
+  EXPECT_HAS(errorOf(withTexture("inline = 1\n")),
+             "texture.inline = 1 has the wrong type (integer); allowed true or false");
+  EXPECT_HAS(errorOf(withTexture("inlined = true\n")), "did you mean 'inline'");
+}

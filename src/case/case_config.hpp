@@ -133,6 +133,7 @@ struct TextureConfig {
   double time_step = 1.0e-3;                 // [s] texture step between frames
   double match_radius = 1.0;                 // [l0] isolated particles this close between frames are the same one
   double birth_grace = 0.02;                 // [s] a particle never yet in its carrying phase is kept this long
+  bool run_inline = false;                   // key `inline`: simulate writes RUN_DIR/texture at every frame
 };
 
 struct CaseConfig {

@@ -184,6 +184,16 @@ std::string Reader::string(const Field& f, const std::string& allowed) const {
   wrongType(f, allowed);
 }
 
+void Reader::boolean(const toml::table& t, const std::string& path, std::string_view key, bool& out) const {
+  Field f = field(t, path, key);
+  if (!f.node) return;
+  if (auto b = f.node->as_boolean()) {
+    out = b->get();
+    return;
+  }
+  wrongType(f, "true or false");
+}
+
 int Reader::choice(const toml::table& t, const std::string& path, std::string_view key,
                    std::initializer_list<std::string_view> choices) const {
   Field f = field(t, path, key);

@@ -69,6 +69,9 @@ class Reader {
 
   std::string string(const Field& f, const std::string& allowed) const;
 
+  // true or false; leaves `out` unchanged when the key is absent.
+  void boolean(const toml::table& t, const std::string& path, std::string_view key, bool& out) const;
+
   // One of `choices`; returns the index of the choice, or -1 when the key is absent.
   int choice(const toml::table& t, const std::string& path, std::string_view key,
              std::initializer_list<std::string_view> choices) const;

@@ -26,6 +26,12 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   simulate->add_flag("--overwrite", sim.overwrite, "Replace the contents of an existing run directory");
   simulate->add_flag("--plain-progress", sim.force_plain_progress, "Log progress lines instead of a progress bar");
+  simulate->footer(
+      "Every frame carries the six-category `category` array. With output.field_spacing > 0 every frame also\n"
+      "writes its flow grid fields/fields_NNNNN.vti, and with `inline = true` in the case's [texture] table the\n"
+      "texture stage runs inline: RUN_DIR/texture/ (the files of `mistfall texture RUN_DIR`, byte for byte the\n"
+      "same) at every frame; --resume rebuilds the cloud from the saved frames first. docs/texture.md.\n"
+      "Exit codes: 0 done, 1 bad input (nothing written), 2 I/O failure, 3 the run diverged.");
 
   mistfall::ClassifyOptions cls;
   auto* classify = app.add_subcommand(
@@ -48,11 +54,11 @@ int main(int argc, char** argv) {
   mistfall::TextureOptions tex;
   auto* texture = app.add_subcommand(
       "texture",
-      "Sub-particle-scale texture of a classified run: droplet/bubble sources shedding mist and micro-bubbles, "
+      "Sub-particle-scale texture of a run as a post-process (or inline: [texture] inline = true): droplet/bubble sources shedding mist and micro-bubbles, "
       "moved by eq. (18) through the saved flow fields; writes RUN_DIR/texture/ (.bin, .vtp, .pvd, texture.csv)");
   texture->add_option("run_dir", tex.run_dir,
-                      "Run directory of `mistfall simulate` (with output.field_spacing > 0), classified by "
-                      "`mistfall classify`; parameters from the [texture] table of its case.toml")
+                      "Run directory of `mistfall simulate` (with output.field_spacing > 0; its frames carry the "
+                      "`category` array); parameters from the [texture] table of its case.toml")
       ->required()
       ->check(CLI::ExistingDirectory);
   texture->add_option("--threads,-j", tex.threads, "OpenMP threads (default: all cores); results do not depend on N")

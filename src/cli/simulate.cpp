@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "case/scene.hpp"
 #include "cli/classify.hpp"
 #include "cli/progress.hpp"
+#include "cli/texture_frames.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bubble_log.hpp"
 #include "io/checkpoint.hpp"
@@ -35,23 +35,16 @@ constexpr const char* kCollection = "frames.pvd";
 constexpr const char* kBubbles = "bubbles.csv";
 constexpr const char* kDiverged = "diverged.txt";  // written when the run diverges
 
-std::string frameName(int frame) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "frames/frame_%05d.vtp", frame);
-  return buf;
-}
+constexpr const char* kTexture = "texture";      // texture.inline = true: the texture stage's files
 
-std::string fieldsName(int frame) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "fields/fields_%05d.vti", frame);
-  return buf;
-}
+std::string frameName(int frame) { return "frames/frame_" + frameNumber(frame) + ".vtp"; }
+
+std::string fieldsName(int frame) { return "fields/fields_" + frameNumber(frame) + ".vti"; }
 
 // The flow fields of a frame on a grid of output.field_spacing over the domain (io/grid_fields.hpp): gas and
 // liquid velocity and SPS turbulence energy k (eqs. (25)-(26), Ds = l0, each phase from its own particles).
 template <int D>
-void writeFields(const fs::path& file, const SimulationState<D>& s, const CaseConfig& config,
-                 MpsSolver<D>& solver, bool ascii) {
+ImageData flowFields(const SimulationState<D>& s, const CaseConfig& config, MpsSolver<D>& solver) {
   const auto& p = s.particles;
   SpsParameters sps;
   sps.ds = config.numerics.particle_spacing;
@@ -61,10 +54,9 @@ void writeFields(const fs::path& file, const SimulationState<D>& s, const CaseCo
   for (int a = 0; a < D; ++a) grid.lower[a] = config.domain.min[a], grid.upper[a] = config.domain.max[a];
   grid.cell_size = config.output.field_spacing;
   grid.radius = kGridSamplingRadiusRatio * config.numerics.particle_spacing;
-  const ImageData image = sampleFlowFields<D>(grid, p, k, s.time, [&](std::int32_t j) {
+  return sampleFlowFields<D>(grid, p, k, s.time, [&](std::int32_t j) {
     return p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow;
   });
-  writeVti(file, image, ascii);
 }
 
 std::string readText(const fs::path& file) {
@@ -130,6 +122,15 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   }
   DiagnosticsWriter diagnostics(dir / kDiagnostics, resume_time);
   BubbleLog bubble_log(dir / kBubbles, resume_time);
+  // texture.inline: the texture of every frame from the in-memory particles, categories and grid; a resumed run
+  // first rebuilds the cloud from the saved frames up to the checkpoint (the post-process path, same values).
+  std::optional<TextureWriter> texture;
+  if (config.texture.run_inline) {
+    fs::remove_all(dir / kTexture);
+    fs::create_directories(dir / kTexture);
+    texture.emplace(config, dir / kTexture, options.ascii);
+    if (options.resume) texture->replay<D>(dir, listSavedFrames(dir, state.time));
+  }
   const double wall_start = omp_get_wtime();
   StepReport last;
 
@@ -140,8 +141,11 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     collection.add(state.time, name);
     collection.write();
     const auto bubbles = solver.currentBubbles();
-    if (config.output.field_spacing > 0.0)
-      writeFields<D>(dir / fieldsName(state.next_frame), state, config, solver, options.ascii);
+    if (config.output.field_spacing > 0.0) {
+      const auto grid = std::make_shared<const ImageData>(flowFields<D>(state, config, solver));
+      writeVti(dir / fieldsName(state.next_frame), *grid, options.ascii);
+      if (texture) texture->frame<D>(frameNumber(state.next_frame), grid, state.particles, category, state.time);
+    }
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
@@ -183,6 +187,11 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   progress.finish();
   std::cerr << "mistfall: done, t = " << state.time << " s in " << state.step << " steps, "
             << state.next_frame << " frames in " << (dir / "frames") << "\n";
+  if (texture && !texture->rows().empty()) {
+    const auto& c = texture->rows().back().counts;
+    std::cerr << "mistfall: texture in " << (dir / kTexture) << ": " << c[0] << " droplets, " << c[1] << " mist, "
+              << c[2] << " bubbles, " << c[3] << " micro-bubbles\n";
+  }
   return 0;
 }
 
@@ -224,6 +233,7 @@ int runSimulate(const SimulateOptions& options) {
           fs::remove(options.out_dir / f);
         fs::remove_all(options.out_dir / "frames");
         fs::remove_all(options.out_dir / "fields");
+        fs::remove_all(options.out_dir / kTexture);
       }
       fs::create_directories(options.out_dir / "frames");
       if (config.output.field_spacing > 0.0) fs::create_directories(options.out_dir / "fields");

@@ -1,7 +1,8 @@
 // `mistfall texture RUN_DIR`: the sub-particle-scale texture of a simulated and classified run (section 3.2),
 // as a post-process over the saved frames (the paper's way). Reads RUN_DIR/case.toml ([texture] table,
-// docs/case-file.md), frames.pvd, the frames' `category` array (written by `mistfall classify`) and the flow
-// grids fields/fields_NNNNN.vti; writes RUN_DIR/texture/texture_NNNNN.{bin,vtp}, texture.pvd and texture.csv.
+// docs/case-file.md), frames.pvd, the frames' `category` array (written by `simulate`, rewritten by
+// `mistfall classify`) and the flow grids fields/fields_NNNNN.vti; writes RUN_DIR/texture/texture_NNNNN.{bin,vtp},
+// texture.pvd and texture.csv: the same bytes as `simulate` with [texture] inline = true (texture_frames.hpp).
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,6 @@
 // The texture stage between frames, independent of where the frames come from (saved files for
-// `mistfall texture`; an in-process caller could pass the grids and categories it holds). For each frame in
+// `mistfall texture`; the grids and categories `simulate` holds with [texture] inline = true; both through
+// cli/texture_frames.hpp). For each frame in
 // order: advanceTo(frame's flow grid) steps the cloud from the previous frame's time through the previous and
 // this grid (equal steps no longer than the texture step), then spawn(frame's particles and categories) adds the
 // sources of the newly isolated particles (source_tracker.hpp).
