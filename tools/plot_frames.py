@@ -87,7 +87,21 @@ def read_vtk_xml(path, vtk_type, what):
 
 def read_vtp(path):
     """Returns (time or None, dict name -> numpy array) for the Points and PointData arrays of one frame."""
-    root, raw = read_vtk_xml(path, "PolyData", "frame")
+    time, arrays = read_vtp_arrays(path)
+    n = arrays["Points"].shape[0] if "Points" in arrays else -1
+    for name, components in (("Points", 3), ("kind", 1), ("phase", 1), ("velocity", 3), ("pressure", 1)):
+        if name not in arrays:
+            raise PlotError(f"unreadable frame {path}: missing array '{name}'")
+        expected = (n, components) if components > 1 else (n,)
+        if arrays[name].shape != expected:
+            raise PlotError(f"unreadable frame {path}: array '{name}' has shape {arrays[name].shape}, "
+                            f"expected {expected}")
+    return time, arrays
+
+
+def read_vtp_arrays(path, what="frame"):
+    """Returns (time or None, dict name -> numpy array) of any VTK PolyData point cloud mistfall writes."""
+    root, raw = read_vtk_xml(path, "PolyData", what)
     piece = root.find("./PolyData/Piece")
     try:
         n = int(piece.get("NumberOfPoints"))
@@ -125,13 +139,8 @@ def read_vtp(path):
             arrays["Points"] = values
         else:
             arrays[name] = values
-    for name, components in (("Points", 3), ("kind", 1), ("phase", 1), ("velocity", 3), ("pressure", 1)):
-        if name not in arrays:
-            raise PlotError(f"unreadable frame {path}: missing array '{name}'")
-        expected = (n, components) if components > 1 else (n,)
-        if arrays[name].shape != expected:
-            raise PlotError(f"unreadable frame {path}: array '{name}' has shape {arrays[name].shape}, "
-                            f"expected {expected}")
+    if "Points" in arrays and arrays["Points"].shape != (n, 3):
+        raise PlotError(f"unreadable {what} {path}: Points has shape {arrays['Points'].shape}, expected ({n}, 3)")
     return time, arrays
 
 
