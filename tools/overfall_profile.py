@@ -19,13 +19,12 @@ RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, 
 prints a summary. Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
 Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /usr/bin/python3.
 """
-import argparse
 import os
 import sys
 import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import PlotError, read_pvd, read_vtp, save, KIND_FLUID  # noqa: E402
+from plot_frames import Parser, PlotError, read_pvd, read_vtp, save, KIND_FLUID  # noqa: E402
 
 import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
@@ -61,13 +60,6 @@ def read_overfall_case(run_dir, bed_region, pool_y):
         _, weir_max = region_box(doc, "weir")
         pool_y = float(weir_max[1])
     return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
-        self.print_usage(sys.stderr)
-        print(f"overfall_profile: {message}", file=sys.stderr)
-        sys.exit(1)
 
 
 def main():

@@ -18,18 +18,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import PlotError, read_case, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
+from plot_frames import Parser, PlotError, read_case, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
 
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
 
 COLUMNS = ("time", "bubble", "particles", "mean_pressure", "centroid_x", "centroid_y", "centroid_z", "size")
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
-        self.print_usage(sys.stderr)
-        print(f"plot_bubble: {message}", file=sys.stderr)
-        sys.exit(1)
 
 
 def largest_bubble_series(run_dir):

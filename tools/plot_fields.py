@@ -21,7 +21,7 @@ import struct
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import PlotError, read_vtk_xml, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
+from plot_frames import Parser, PlotError, read_vtk_xml, save  # noqa: E402  (same folder; exits cleanly without matplotlib)
 
 import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
@@ -29,13 +29,6 @@ import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg b
 REQUIRED = (("gas_velocity", 3), ("liquid_velocity", 3), ("gas_sps_k", 1), ("gas_coverage", 1),
             ("liquid_coverage", 1))
 GAS_COLOUR, LIQUID_COLOUR = "crimson", "navy"
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
-        self.print_usage(sys.stderr)
-        print(f"plot_fields: {message}", file=sys.stderr)
-        sys.exit(1)
 
 
 # ---- reading ----

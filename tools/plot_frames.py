@@ -43,9 +43,11 @@ class PlotError(Exception):
 
 
 class Parser(argparse.ArgumentParser):
-    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
+    """The tools' argument parser: usage errors exit 1 like every other bad input (argparse's default is 2), with
+    the message prefixed by the tool's name (its script name without .py)."""
+    def error(self, message):
         self.print_usage(sys.stderr)
-        print(f"plot_frames: {message}", file=sys.stderr)
+        print(f"{os.path.splitext(self.prog)[0]}: {message}", file=sys.stderr)
         sys.exit(1)
 
 

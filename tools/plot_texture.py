@@ -14,25 +14,17 @@ snapshots, the matching RUN_DIR/frames/frame_NNNNN.vtp (the water, drawn behind)
 Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
 Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /usr/bin/python3.
 """
-import argparse
 import os
 import sys
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import PlotError, read_vtp, read_vtp_arrays, save, KIND_FLUID  # noqa: E402
+from plot_frames import Parser, PlotError, read_vtp, read_vtp_arrays, save, KIND_FLUID  # noqa: E402
 
 import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
 
 DROPLET, MIST, BUBBLE, MICRO_BUBBLE = 0, 1, 2, 3  # TextureKind in src/texture/texture_kind.hpp
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # usage errors exit 1 like every other bad input (argparse's default is 2)
-        self.print_usage(sys.stderr)
-        print(f"plot_texture: {message}", file=sys.stderr)
-        sys.exit(1)
 
 
 def read_texture_pvd(run_dir):
