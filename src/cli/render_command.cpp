@@ -1,6 +1,7 @@
 // `mistfall render`: meshes, scenes, povray in parallel, ffmpeg (see render_command.hpp).
 #include "cli/render_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <map>
@@ -86,12 +87,13 @@ std::vector<std::string> povrayCommand(const Frame& f, const CaseConfig& c, cons
 void joinImages(const CaseConfig& c, const Layout& out) {
   const std::string rate = std::to_string(c.render.frame_rate);
   const std::vector<std::string> input{"ffmpeg", "-y", "-loglevel", "error", "-framerate", rate, "-pattern_type",
-                                       "glob", "-i", (out.images / "frame_*.png").string()};
+                                       "glob", "-i", (fs::absolute(out.images) / "frame_*.png").string()};
   const std::map<std::string, std::vector<std::string>> outputs{
       {".mp4", {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"}},
       {".gif", {"-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse"}}};
   for (const auto& [ext, args] : outputs) {
-    const fs::path final_file = out.video_stem.string() + ext, tmp = out.video_stem.string() + ".tmp" + ext;
+    const fs::path final_file = out.video_stem.string() + ext;
+    const fs::path tmp = fs::absolute(out.video_stem).string() + ".tmp" + ext;
     std::vector<std::string> cmd = input;
     cmd.insert(cmd.end(), args.begin(), args.end());
     cmd.push_back(tmp.string());

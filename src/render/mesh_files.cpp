@@ -34,7 +34,7 @@ T getLe(std::istream& in) {
 
 void writePovMesh(const std::filesystem::path& file, const TriangleMesh& mesh, const std::string& name) {
   writeFileAtomically(file, [&](std::ostream& out) {
-    out.precision(9);
+    out.precision(7);  // 0.1 um at 1 m
     out << "// Water surface written by mistfall render: " << mesh.vertices.size() << " vertices, "
         << mesh.triangles.size() << " triangles\n#declare " << name << " = mesh2 {\n  vertex_vectors { "
         << mesh.vertices.size();
