@@ -137,3 +137,41 @@ TEST(RenderCommand, BadRunDirectoryIsBadInput) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 }
+
+TEST(RenderCommand, RunDoesSimulateTextureAndRenderInOneCommand) {
+  ASSERT_TRUE(findOnPath("povray") && findOnPath("ffmpeg")) << "scripts/install-deps.sh installs povray and ffmpeg";
+  const fs::path dir = test_support::freshDir("render_run");
+  std::ofstream(dir / "case.toml") << R"([case]
+name = "tiny_run"
+dimension = 2
+[domain]
+min = [-0.03, -0.03]
+max = [0.23, 0.2]
+[numerics]
+particle_spacing = 0.01
+[output]
+end_time = 0.02
+interval = 0.01
+field_spacing = 0.02
+[render]
+preview_width = 64
+preview_height = 48
+extrusion_width = 0.03
+[[region]]
+name = "water"
+min = [0.0, 0.0]
+max = [0.1, 0.1]
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.03, -0.03]
+max = [0.23, 0.0]
+)";
+  const fs::path run = dir / "run";
+  const auto r = runCli("run " + quoted(dir / "case.toml") + " --out " + quoted(run) +
+                        " --preview --threads 1 --jobs 2 --plain-progress");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"frames/frame_00002.vtp", "texture/texture_00002.bin", "render/preview/frame_00000.png",
+                        "render/preview/frame_00002.png", "render/preview/tiny_run.mp4", "render/preview/tiny_run.gif"})
+    EXPECT_TRUE(fs::exists(run / f)) << f;
+}

@@ -1,11 +1,12 @@
 // mistfall command line: `mistfall simulate CASE.toml --out DIR`, `mistfall classify RUN_DIR`, `mistfall texture
-// RUN_DIR`, `mistfall render RUN_DIR`. `mistfall --help` lists them.
+// RUN_DIR`, `mistfall render RUN_DIR`, `mistfall run CASE.toml --out DIR` (all four). `mistfall --help` lists them.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
 #include "cli/classify.hpp"
 #include "cli/render_command.hpp"
+#include "cli/run_command.hpp"
 #include "cli/simulate.hpp"
 #include "cli/texture_command.hpp"
 
@@ -79,6 +80,23 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   render->add_flag("--plain-progress", ren.force_plain_progress, "Log progress lines instead of a progress bar");
 
+  mistfall::RunOptions pipe;
+  auto* run = app.add_subcommand(
+      "run", "The whole pipeline: simulate (frames classified as written), texture (when the case has "
+             "output.field_spacing > 0) and render, into one run directory");
+  run->add_option("case", pipe.case_file, "Case file (TOML); see docs/case-file.md")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run->add_option("--out,-o", pipe.out_dir, "Run directory to write (created; must be new or empty)")->required();
+  run->add_option("--until", pipe.until, "Stop the simulation at this time [s] (default: output.end_time)");
+  run->add_option("--threads", pipe.threads, "OpenMP threads of simulate and texture (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  run->add_option("--jobs,-j", pipe.jobs, "povray processes at once (default: the number of cores)")
+      ->check(CLI::Range(1, 4096));
+  run->add_flag("--preview", pipe.preview, "Render small preview images (see `render --help`)");
+  run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
+  run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
+
   // Command-line errors are bad input: exit code 1 like every other input error (CLI11 would use 100+).
   try {
     app.parse(argc, argv);
@@ -103,5 +121,6 @@ int main(int argc, char** argv) {
   if (classify->parsed()) return mistfall::runClassify(cls);
   if (texture->parsed()) return mistfall::runTexture(tex);
   if (render->parsed()) return mistfall::runRender(ren);
+  if (run->parsed()) return mistfall::runPipeline(pipe);
   return 0;
 }
