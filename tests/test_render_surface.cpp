@@ -63,6 +63,18 @@ TEST(RenderSurface, TwoDimensionalFrameIsExtrudedToASlab) {
   EXPECT_NEAR(enclosedVolume(mesh) / (column.size() * kL0 * kL0 * width), 1.0, 0.05);
 }
 
+TEST(RenderSurface, AdaptiveMeshIsClosedWithFewerTriangles) {
+  const auto centres = block(20, 10, 8, kL0);
+  SurfaceParameters uniform_parameters{kL0};
+  uniform_parameters.adaptivity = 0.0;
+  const TriangleMesh uniform = liquidSurface(centres, uniform_parameters);
+  const TriangleMesh adaptive = liquidSurface(centres, {kL0});  // the default, 0.1
+  EXPECT_EQ(openEdgeCount(uniform), 0u);
+  EXPECT_EQ(openEdgeCount(adaptive), 0u);
+  EXPECT_LT(adaptive.triangles.size() * 5, uniform.triangles.size());
+  EXPECT_NEAR(enclosedVolume(adaptive) / enclosedVolume(uniform), 1.0, 0.02);
+}
+
 TEST(RenderSurface, NoParticlesGiveAnEmptyMeshAndABadSpacingThrows) {
   EXPECT_TRUE(liquidSurface({}, {kL0}).triangles.empty());
   EXPECT_THROW(liquidSurface(block(2, 2, 2, kL0), {0.0}), std::invalid_argument);

@@ -69,7 +69,7 @@ TriangleMesh liquidSurface(const std::vector<Vec<3>>& centres, const SurfacePara
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> tris;
   std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*grid, points, tris, quads, 0.0, 0.0);
+  openvdb::tools::volumeToMesh(*grid, points, tris, quads, 0.0, parameters.adaptivity);
   mesh.vertices.reserve(points.size());
   for (const auto& p : points) mesh.vertices.push_back(toVec(p));
   // volumeToMesh winds its polygons clockwise seen from outside: reverse them.

@@ -2,7 +2,8 @@
 // mesh. Each particle is a sphere of radius l0 rasterised into an OpenVDB narrow-band level set (voxel l0/3), the
 // set is smoothed by mean-curvature flow and eroded so that a block of particles on a lattice of spacing l0 gets
 // its own volume (count * l0^3: the surface lies l0/2 outside the outermost particle centres), and the zero level
-// set becomes triangles (OpenVDB volumeToMesh, no adaptivity) with area-weighted vertex normals pointing out.
+// set becomes triangles (OpenVDB volumeToMesh, larger ones where the surface is flat) with area-weighted vertex
+// normals pointing out.
 // A 2D frame is extruded first: every particle is copied across z in [-width/2, width/2] at spacing l0.
 #pragma once
 
@@ -23,6 +24,9 @@ struct SurfaceParameters {
   double spacing = 0.0;           // l0 [m]
   double voxel_fraction = 1.0 / 3.0;  // voxel size / l0
   int smoothing_passes = 2;       // mean-curvature flow passes on the level set
+  // OpenVDB volumeToMesh adaptivity in [0, 1]: 0 = uniform triangles of voxel size; 0.1 merges them on flat
+  // parts (a lattice block: a tenth of the triangles, still closed, volume 0.7 % lower).
+  double adaptivity = 0.1;
 };
 
 // The surface around `centres` (3D particle centres). Empty centres give an empty mesh.
