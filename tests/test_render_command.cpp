@@ -23,26 +23,24 @@ namespace {
 
 constexpr double kL0 = 0.01;
 
-// A run directory: case.toml and two frames of a 10 x 10 block of water (the second moved right by 2 cm) with a
-// droplet above it, classified (category array).
-fs::path makeRun(const std::string& name) {
-  const fs::path dir = test_support::freshDir(name);
-  std::ofstream(dir / "case.toml") << R"([case]
-name = "tiny_block"
+// A 2D case: a 10 x 10 block of water (l0 = 1 cm) on a floor, 64 x 48 previews; `output` ends [output].
+std::string tinyCase(const std::string& name, const std::string& output, double extrusion_width) {
+  return "[case]\nname = \"" + name + R"("
 dimension = 2
 [domain]
-min = [-0.02, -0.02]
+min = [-0.03, -0.03]
 max = [0.3, 0.2]
 [numerics]
 particle_spacing = 0.01
 [output]
 end_time = 0.02
 interval = 0.01
+)" + output + R"(
 [render]
 preview_width = 64
 preview_height = 48
-extrusion_width = 0.05
 frame_rate = 5
+extrusion_width = )" + std::to_string(extrusion_width) + R"(
 [[region]]
 name = "water"
 min = [0.0, 0.0]
@@ -50,9 +48,16 @@ max = [0.1, 0.1]
 [[region]]
 name = "floor"
 material = "wall"
-min = [-0.02, -0.02]
+min = [-0.03, -0.03]
 max = [0.3, 0.0]
 )";
+}
+
+// A run directory: case.toml and two frames of the block (the second moved right by 2 cm) with a droplet above
+// it, classified (category array).
+fs::path makeRun(const std::string& name) {
+  const fs::path dir = test_support::freshDir(name);
+  std::ofstream(dir / "case.toml") << tinyCase("tiny_block", "", 0.05);
   fs::create_directories(dir / "frames");
   for (int f = 0; f < 2; ++f) {
     Particles<2> p;
@@ -141,32 +146,7 @@ TEST(RenderCommand, BadRunDirectoryIsBadInput) {
 TEST(RenderCommand, RunDoesSimulateTextureAndRenderInOneCommand) {
   ASSERT_TRUE(findOnPath("povray") && findOnPath("ffmpeg")) << "scripts/install-deps.sh installs povray and ffmpeg";
   const fs::path dir = test_support::freshDir("render_run");
-  std::ofstream(dir / "case.toml") << R"([case]
-name = "tiny_run"
-dimension = 2
-[domain]
-min = [-0.03, -0.03]
-max = [0.23, 0.2]
-[numerics]
-particle_spacing = 0.01
-[output]
-end_time = 0.02
-interval = 0.01
-field_spacing = 0.02
-[render]
-preview_width = 64
-preview_height = 48
-extrusion_width = 0.03
-[[region]]
-name = "water"
-min = [0.0, 0.0]
-max = [0.1, 0.1]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.03, -0.03]
-max = [0.23, 0.0]
-)";
+  std::ofstream(dir / "case.toml") << tinyCase("tiny_run", "field_spacing = 0.02", 0.03);
   const fs::path run = dir / "run";
   const auto r = runCli("run " + quoted(dir / "case.toml") + " --out " + quoted(run) +
                         " --preview --threads 1 --jobs 2 --plain-progress");
