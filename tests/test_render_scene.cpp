@@ -1,12 +1,15 @@
 // A generated scene parses and renders: povray draws a tiny image (64 x 48, PPM) of a block of water in front of
 // the background, and the water's pixels differ from the background's. Needs povray (scripts/install-deps.sh).
+// Also the scene text, and what a frame puts in its scene (walls cut away on the line of sight, droplets).
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 #include <fstream>
 
+#include "case/case_file.hpp"
 #include "render/external_tools.hpp"
+#include "render/frame_scene.hpp"
 #include "render/materials.hpp"
 #include "render/mesh_files.hpp"
 #include "render/scene_writer.hpp"
@@ -114,4 +117,50 @@ TEST(RenderScene, SceneHasCameraLightMaterialsAndOnlyNonEmptyGroups) {
   EXPECT_EQ(text.find("M_Bubble"), std::string::npos);
   EXPECT_EQ(text.find("Water_Surface"), std::string::npos);
   EXPECT_NE(defaultMaterials().find("ior 1.33"), std::string::npos);
+}
+
+TEST(RenderScene, WallsOnTheLineOfSightAreCutAwayAndDropletsLeaveTheMesh) {
+  // 3D tank: floor, back wall (y max) and front wall (y min); the default camera looks from -y.
+  const CaseConfig c = parseCase(R"([case]
+name = "tank"
+dimension = 3
+[domain]
+min = [-0.1, -0.1, -0.1]
+max = [1.1, 1.1, 1.1]
+[numerics]
+particle_spacing = 0.1
+[output]
+end_time = 1.0
+[[region]]
+name = "water"
+min = [0.0, 0.0, 0.0]
+max = [0.5, 0.5, 0.5]
+[[region]]
+name = "floor"
+material = "wall"
+min = [-0.1, -0.1, -0.1]
+max = [1.1, 1.1, 0.0]
+[[region]]
+name = "back"
+material = "wall"
+min = [-0.1, 1.0, 0.0]
+max = [1.1, 1.1, 1.0]
+[[region]]
+name = "front"
+material = "wall"
+min = [-0.1, -0.1, 0.0]
+max = [1.1, 0.0, 1.0]
+)",
+                                 "tank.toml");
+  Particles<3> p;
+  p.add(Vec<3>(0.05, 0.05, 0.05), Vec<3>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+  p.add(Vec<3>(0.5, 0.5, 0.9), Vec<3>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+  p.add(Vec<3>(0.0, 0.0, -0.05), Vec<3>::Zero(), ParticleKind::Wall, Phase::Liquid);
+  const FrameScene s = frameScene<3>(p, {1, 3, 0}, c, nullptr);
+  ASSERT_EQ(s.content.walls.size(), 2u);  // floor and back
+  EXPECT_DOUBLE_EQ(s.content.walls[1].min[1], 1.0);
+  EXPECT_EQ(s.content.up_axis, 2);
+  ASSERT_EQ(s.liquid.size(), 1u);  // the droplet (category 3) and the wall particle are not meshed
+  ASSERT_EQ(s.content.droplets.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.content.droplets[0].z(), 0.9);
 }

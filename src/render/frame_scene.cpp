@@ -1,6 +1,7 @@
 // The objects of one frame's scene (see frame_scene.hpp).
 #include "render/frame_scene.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "classify/classification.hpp"
@@ -15,6 +16,24 @@ Vec<3> padded(const Vec<D>& x) {
   Vec<3> v = Vec<3>::Zero();
   v.head<D>() = x;
   return v;
+}
+
+// True when the segment from `from` to `to` passes through the box (slab test).
+bool segmentHitsBox(const std::array<double, 3>& from, const std::array<double, 3>& to, const Box& b) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = to[k] - from[k];
+    if (d == 0.0) {
+      if (from[k] < b.min[k] || from[k] > b.max[k]) return false;
+      continue;
+    }
+    double ta = (b.min[k] - from[k]) / d, tb = (b.max[k] - from[k]) / d;
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -51,7 +70,7 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
     if (region.material != Material::Wall || region.shape != RegionShape::Box) continue;
     Box b = region.box;
     if (D == 2) b.min[2] = -0.5 * r.extrusion_width, b.max[2] = 0.5 * r.extrusion_width;
-    c.walls.push_back(b);
+    if (!segmentHitsBox(r.camera_location, r.camera_look_at, b)) c.walls.push_back(b);
   }
   if (texture)
     for (std::size_t i = 0; i < texture->position.size(); ++i) {

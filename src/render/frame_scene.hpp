@@ -7,7 +7,9 @@
 //  * mist and micro-bubbles: the representatives of the texture stage (texture_NNNNN.bin) when there is one, drawn
 //    with render.mist_radius and render.micro_bubble_radius (the texture's droplet and bubble sources are the
 //    frame's own droplets and bubbles, drawn from the frame);
-//  * walls: the case's box-shaped wall regions (2D: across the extrusion width); circle-shaped walls are not drawn;
+//  * walls: the case's box-shaped wall regions (2D: across the extrusion width), except those the line of sight
+//    from render.camera_location to camera_look_at passes through (a tank's front wall: cut away so that the
+//    water shows); circle-shaped walls are not drawn;
 //  * the ground plane at the bottom of the domain.
 #pragma once
 
