@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package mistfall needs. Quick when all are present.
-# Usage: scripts/install-deps.sh [--with-render]   (render tools: povray, ffmpeg, openvdb)
+# Usage: scripts/install-deps.sh
+# The render stage's packages are always installed: OpenVDB is needed to build (src/render/surface_mesh.cpp) and
+# the tests of `mistfall render` run povray and ffmpeg.
 set -euo pipefail
 
 packages=(
@@ -9,6 +11,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   python3 python3-numpy python3-matplotlib
+  libopenvdb-dev povray ffmpeg
 )
 
 missing=()

@@ -136,6 +136,22 @@ struct TextureConfig {
   bool run_inline = false;                   // key `inline`: simulate writes RUN_DIR/texture at every frame
 };
 
+// The render stage (`mistfall render`, src/render). Positions are in the simulation's coordinates (a 2D run's
+// third coordinate is across its extrusion, z in [-extrusion_width/2, extrusion_width/2]). The parser fills in
+// every default (docs/case-file.md), so all fields hold the values used.
+struct RenderConfig {
+  std::array<double, 3> camera_location{0.0, 0.0, 0.0};
+  std::array<double, 3> camera_look_at{0.0, 0.0, 0.0};
+  double camera_angle = 40.0;                // horizontal field of view [deg]
+  std::array<double, 3> light_location{0.0, 0.0, 0.0};
+  int image_width = 640, image_height = 480;
+  int preview_width = 192, preview_height = 144;
+  double extrusion_width = 0.0;              // [m] a 2D run's water is extruded across this; default texture.width
+  double frame_rate = 25.0;                  // frames per second of the MP4 and GIF
+  double mist_radius = 0.0;                  // [m] drawn radius of a mist representative; default l0 / 4
+  double micro_bubble_radius = 0.0;          // [m] drawn radius of a micro-bubble representative; default l0 / 4
+};
+
 struct CaseConfig {
   std::string name;
   int dimension = 2;
@@ -148,6 +164,7 @@ struct CaseConfig {
   OutputConfig output;
   ClassificationParameters classify;  // [classify]: the six-category classification (src/classify)
   TextureConfig texture;
+  RenderConfig render;
 };
 
 const char* toString(PressureSolverKind k);

@@ -97,7 +97,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const Reader rd(source_name);
   CaseConfig c;
   rd.checkKeys(root, "",
-               {"case", "domain", "physics", "numerics", "output", "classify", "texture", "region", "inflow", "outflow"});
+               {"case", "domain", "physics", "numerics", "output", "classify", "texture", "render", "region", "inflow", "outflow"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");
@@ -202,6 +202,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
   detail::readTexture(rd, root, c);
+  detail::readRender(rd, root, c);
   return c;
 }
 

@@ -90,4 +90,7 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
 // The optional [texture] table (case_texture.cpp); needs [numerics] and [output] already read.
 void readTexture(const Reader& rd, const toml::table& root, CaseConfig& c);
 
+// The optional [render] table (case_render.cpp); needs [domain], [numerics] and [texture] already read.
+void readRender(const Reader& rd, const toml::table& root, CaseConfig& c);
+
 }  // namespace mistfall::detail

@@ -1,10 +1,12 @@
-// mistfall command line: `mistfall simulate CASE.toml --out DIR`, `mistfall classify RUN_DIR`. `mistfall --help`
-// lists them.
+// mistfall command line: `mistfall simulate CASE.toml --out DIR`, `mistfall classify RUN_DIR`, `mistfall texture
+// RUN_DIR`, `mistfall render RUN_DIR`, `mistfall run CASE.toml --out DIR` (all four). `mistfall --help` lists them.
 #include <CLI/CLI.hpp>
 
 #include <iostream>
 
 #include "cli/classify.hpp"
+#include "cli/render_command.hpp"
+#include "cli/run_command.hpp"
 #include "cli/simulate.hpp"
 #include "cli/texture_command.hpp"
 
@@ -67,6 +69,40 @@ int main(int argc, char** argv) {
   texture->add_flag("--overwrite", tex.overwrite, "Replace an existing RUN_DIR/texture");
   texture->add_flag("--plain-progress", tex.force_plain_progress, "Log progress lines instead of a progress bar");
 
+  mistfall::RenderOptions ren;
+  auto* render = app.add_subcommand(
+      "render", "Render a run with POV-Ray: water surface meshes (.inc mesh2, .ply), one scene per frame, images "
+                "(povray, in parallel) and an animation (ffmpeg: RUN_DIR/render/<case>.mp4 and .gif)");
+  render->footer(
+      "Reads RUN_DIR/case.toml ([render]: camera, light, image sizes; docs/case-file.md), the frames, their\n"
+      "category array (droplets, bubbles) and RUN_DIR/texture/texture_NNNNN.bin (mist, micro-bubbles) when present.\n"
+      "Writes RUN_DIR/render/: materials.inc (once; edit it to restyle), mesh_NNNNN.inc/.ply, scene_NNNNN.pov,\n"
+      "png/frame_NNNNN.png (preview/ with --preview), log/ and the animation. Frames whose image exists are\n"
+      "skipped. Needs the Debian packages povray and ffmpeg.\n"
+      "Exit codes: 0 done, 1 bad input or povray/ffmpeg missing (nothing written), 2 a write or povray/ffmpeg failed.");
+  render->add_option("run_dir", ren.run_dir, "Run directory written by `mistfall simulate`")->required();
+  render->add_flag("--preview", ren.preview, "Small images (render.preview_width x preview_height), no antialiasing");
+  render->add_option("--jobs,-j", ren.jobs, "povray processes at once (default: the number of cores)")
+      ->check(CLI::Range(1, 4096));
+  render->add_flag("--plain-progress", ren.force_plain_progress, "Log progress lines instead of a progress bar");
+
+  mistfall::RunOptions pipe;
+  auto* run = app.add_subcommand(
+      "run", "The whole pipeline: simulate (frames classified as written), texture (when the case has "
+             "output.field_spacing > 0) and render, into one run directory");
+  run->add_option("case", pipe.case_file, "Case file (TOML); see docs/case-file.md")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run->add_option("--out,-o", pipe.out_dir, "Run directory to write (created; must be new or empty)")->required();
+  run->add_option("--until", pipe.until, "Stop the simulation at this time [s] (default: output.end_time)");
+  run->add_option("--threads", pipe.threads, "OpenMP threads of simulate and texture (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  run->add_option("--jobs,-j", pipe.jobs, "povray processes at once (default: the number of cores)")
+      ->check(CLI::Range(1, 4096));
+  run->add_flag("--preview", pipe.preview, "Render small preview images (see `render --help`)");
+  run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
+  run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
+
   // Command-line errors are bad input: exit code 1 like every other input error (CLI11 would use 100+).
   try {
     app.parse(argc, argv);
@@ -90,5 +126,7 @@ int main(int argc, char** argv) {
   }
   if (classify->parsed()) return mistfall::runClassify(cls);
   if (texture->parsed()) return mistfall::runTexture(tex);
+  if (render->parsed()) return mistfall::runRender(ren);
+  if (run->parsed()) return mistfall::runPipeline(pipe);
   return 0;
 }
