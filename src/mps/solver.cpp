@@ -122,8 +122,11 @@ void MpsSolver<D>::findBubbles() {
     // Gas that was open and is enclosed now joins the water's system and is carried by the water.
     std::vector<char> joined(p.size(), 0);
     bool any_joined = false;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (regions_.enclosed_particle[i] && !(i < p.enclosed.size() && p.enclosed[i])) joined[i] = 1, any_joined = true;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const bool was_enclosed = i < p.enclosed.size() && p.enclosed[i];
+      joined[i] = regions_.enclosed_particle[i] && !was_enclosed;
+      any_joined = any_joined || joined[i];
+    }
     if (any_joined) adoptLiquidVelocity<D>(p, neighbours_, joined, constants_.re_number_density);
     p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
@@ -436,7 +439,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   gas_pressure_.assign(n, 0.0);
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
-    gas_pressure_[i] = (roles_.enclosed_gas[i] || closed) ? pressure_unknowns_[r] : std::max(0.0, pressure_unknowns_[r]);
+    const double solved = pressure_unknowns_[r];
+    gas_pressure_[i] = (roles_.enclosed_gas[i] || closed) ? solved : std::max(0.0, solved);
   }
   extrapolateDummyPressure(gas_pressure_, gas.density, !closed);
   for (std::int64_t i = 0; i < n; ++i) {
