@@ -16,6 +16,7 @@
 #include "mps/neighbor_search.hpp"
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/solver.hpp"
+#include "support/run_case.hpp"
 
 using namespace mistfall;
 
@@ -76,14 +77,8 @@ max = [0.12, 0.09]
   return text;
 }
 
-struct EntrainedRun {
-  CaseConfig config;
-  SimulationState<2> state;
-  std::unique_ptr<MpsSolver<2>> solver;
-  explicit EntrainedRun(double rise_speed) : config(parseCase(entrainedCase(rise_speed), "entrained.toml")) {
-    state.particles = buildParticles<2>(config);
-    solver = std::make_unique<MpsSolver<2>>(config, state);
-  }
+struct EntrainedRun : test_support::SolverRun<2> {
+  explicit EntrainedRun(double rise_speed) : SolverRun(entrainedCase(rise_speed), "entrained.toml") {}
   std::size_t count(Phase phase) const {
     const auto& p = state.particles;
     std::size_t c = 0;

@@ -17,6 +17,7 @@
 #include "mps/bubble_pressure.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "support/exact_solve.hpp"
+#include "support/run_case.hpp"
 #include "support/same_particles.hpp"
 #include "mps/solver.hpp"
 
@@ -71,14 +72,8 @@ max = [0.12, 0.09]
   return text;
 }
 
-struct TankRun {
-  CaseConfig config;
-  SimulationState<2> state;
-  std::unique_ptr<MpsSolver<2>> solver;
-  explicit TankRun(const std::string& text) : config(parseCase(text, "two_phase_tank.toml")) {
-    state.particles = buildParticles<2>(config);
-    solver = std::make_unique<MpsSolver<2>>(config, state);
-  }
+struct TankRun : test_support::SolverRun<2> {
+  explicit TankRun(const std::string& text) : SolverRun(text, "two_phase_tank.toml") {}
 };
 
 // The liquid system of a tank with a bubble, assembled as the solver does: one density, every bubble particle an

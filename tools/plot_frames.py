@@ -148,12 +148,17 @@ def read_vtp_arrays(path, what="frame"):
 
 def read_pvd(run_dir):
     """Returns [(time, frame path)] in the order frames.pvd lists them."""
-    pvd = os.path.join(run_dir, "frames.pvd")
+    return read_pvd_file(os.path.join(run_dir, "frames.pvd"), f"is {run_dir} a mistfall run directory?")
+
+
+def read_pvd_file(pvd, hint):
+    """Returns [(time, path)] in the order the collection `pvd` lists them (paths relative to its folder); `hint`
+    goes into the message when it does not exist."""
     if not os.path.isfile(pvd):
-        raise PlotError(f"{pvd} does not exist (is {run_dir} a mistfall run directory?)")
+        raise PlotError(f"{pvd} does not exist ({hint})")
     try:
         root = ET.parse(pvd).getroot()
-        frames = [(float(d.get("timestep")), os.path.join(run_dir, d.get("file")))
+        frames = [(float(d.get("timestep")), os.path.join(os.path.dirname(pvd), d.get("file")))
                   for d in root.iter("DataSet")]
     except (OSError, ET.ParseError, TypeError, ValueError) as e:
         raise PlotError(f"cannot read {pvd}: {e}") from None

@@ -16,10 +16,9 @@ Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /
 """
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import Parser, PlotError, read_vtp, read_vtp_arrays, save, KIND_FLUID  # noqa: E402
+from plot_frames import Parser, PlotError, read_pvd_file, read_vtp, read_vtp_arrays, save, KIND_FLUID  # noqa: E402
 
 import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402  (plot_frames has chosen the Agg backend)
@@ -28,18 +27,7 @@ DROPLET, MIST, BUBBLE, MICRO_BUBBLE = 0, 1, 2, 3  # TextureKind in src/texture/t
 
 
 def read_texture_pvd(run_dir):
-    pvd = os.path.join(run_dir, "texture", "texture.pvd")
-    if not os.path.isfile(pvd):
-        raise PlotError(f"{pvd} does not exist (run `mistfall texture {run_dir}` first)")
-    try:
-        root = ET.parse(pvd).getroot()
-        entries = [(float(d.get("timestep")), os.path.join(run_dir, "texture", d.get("file")))
-                   for d in root.iter("DataSet")]
-    except (OSError, ET.ParseError, TypeError, ValueError) as e:
-        raise PlotError(f"cannot read {pvd}: {e}") from None
-    if not entries:
-        raise PlotError(f"{pvd} lists no frames")
-    return entries
+    return read_pvd_file(os.path.join(run_dir, "texture", "texture.pvd"), f"run `mistfall texture {run_dir}` first")
 
 
 def extent_row(time, arrays):

@@ -21,16 +21,15 @@
 #include "mps/neighbor_search.hpp"
 #include "mps/particles.hpp"
 #include "mps/phase_coupling.hpp"
+#include "mps/splitmix.hpp"
 
 namespace mistfall {
 
-// A uniform number in [0, 1) from (step, index): splitmix64 finaliser of the combined key.
+// A uniform number in [0, 1) from (step, index): the splitmix64 finaliser of the combined key.
 inline double entrainedGasDraw(std::int64_t step, std::size_t index) {
-  std::uint64_t z = static_cast<std::uint64_t>(step) * 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(index) + 1) * 0xD1B54A32D192ED03ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
+  const std::uint64_t key = static_cast<std::uint64_t>(step) * 0x9E3779B97F4A7C15ull ^
+                            (static_cast<std::uint64_t>(index) + 1) * 0xD1B54A32D192ED03ull;
+  return static_cast<double>(splitmixFinalise(key) >> 11) * 0x1.0p-53;
 }
 
 // Swaps entrained sub-resolution gas (gas of enclosed regions that is not a resolved bubble: roles.enclosed_gas = 0)

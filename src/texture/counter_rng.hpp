@@ -9,15 +9,9 @@
 #include <cstdint>
 #include <numbers>
 
-namespace mistfall {
+#include "mps/splitmix.hpp"
 
-// The splitmix64 output function: a bijective avalanche mix of a 64-bit word.
-inline std::uint64_t splitmix64(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+namespace mistfall {
 
 // Independent streams of one particle in one step.
 enum class RandomStream : std::uint64_t { Fluctuation = 1, Birth = 2, Across = 3 };

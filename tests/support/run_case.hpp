@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "case/case_file.hpp"
@@ -13,6 +14,18 @@ namespace mistfall::test_support {
 inline CaseConfig loadShippedCase(const std::string& name) {
   return loadCaseFile(std::string(MISTFALL_SOURCE_DIR) + "/cases/" + name);
 }
+
+// A case parsed from text, its particles built and a solver over them, ready to step (solver->step(until)).
+template <int D>
+struct SolverRun {
+  CaseConfig config;
+  SimulationState<D> state;
+  std::unique_ptr<MpsSolver<D>> solver;
+  SolverRun(const std::string& text, const std::string& source_name) : config(parseCase(text, source_name)) {
+    state.particles = buildParticles<D>(config);
+    solver = std::make_unique<MpsSolver<D>>(config, state);
+  }
+};
 
 // Advances a fresh run of `config` through each time in `times` (ascending), calling visit(time, state, solver).
 template <int D>
