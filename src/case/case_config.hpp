@@ -110,6 +110,8 @@ struct NumericsConfig {
   GasDomain gas_domain = GasDomain::Open;
   // [m/s] terminal rise speed of entrained gas below a bubble's resolution (mps/entrained_gas_rise.hpp); 0 = none
   double entrained_gas_rise_speed = 0.0;
+  // Largest move of a gas particle by its pressure correction in one step, / l0 (0 = no limit; docs/waterfall.md)
+  double gas_correction_limit = 0.0;
 };
 
 struct OutputConfig {

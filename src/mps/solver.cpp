@@ -459,11 +459,15 @@ void MpsSolver<D>::correctGas(double dt) {
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   auto solvedPressure = [&](std::int32_t j) { return roles_.inGasSystem(j) || roles_.gas_side_wall[j]; };
   auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
+  // numerics.gas_correction_limit: |u'| dt <= limit l0 (a correction that would carry gas particles past their
+  // neighbours in one step comes from a pressure outlier, not from the flow).
+  const double limit = config_.numerics.gas_correction_limit * constants_.l0 / dt;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
     change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
+    if (limit > 0.0 && change[i].norm() > limit) change[i] *= limit / change[i].norm();
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
