@@ -1,0 +1,125 @@
+// The gas's pressure system and correction, eqs. (6), (8), (17) (the step's stages `solveGasPressure`,
+// `correctGas`, `riseEntrainedGas`, and `moveBubbleGas` of MpsSolver, solver.hpp): every gas particle carries an
+// unknown, with the moved liquid and the walls next to gas as its walls (phase_coupling.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mps/bubble_gas_motion.hpp"
+#include "mps/entrained_gas_rise.hpp"
+#include "mps/gradient.hpp"
+#include "mps/number_density.hpp"
+#include "mps/solver.hpp"
+
+namespace mistfall {
+
+// The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
+// particle within re of gas (at the liquid's corrected positions). n* counts every particle. With
+// numerics.gas_domain = "open" the gas has free-surface particles (p = 0) and open gas pressures are clamped at 0;
+// with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
+// pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
+// P_B comes from the liquid system).
+template <int D>
+void MpsSolver<D>::solveGasPressure(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  markGasSideWalls<D>(p, neighbours_, constants_.re_number_density, roles_);
+  const double re = constants_.re_number_density;
+  gas_number_density_.assign(n, 0.0);
+  auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i)
+    if (roles_.inGasSystem(i) || roles_.gas_side_wall[i])
+      gas_number_density_[i] = numberDensityAt<D>(i, p.position, neighbours_, re, active);
+  const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
+  const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
+  std::vector<char> active_flags(n);
+  for (std::int64_t i = 0; i < n; ++i) active_flags[i] = isActive(p.kind[i]);
+  problem_.takes_part.assign(n, 0);
+  problem_.unknown.assign(n, 0);
+  problem_.carries_velocity.assign(n, 0);
+  problem_.density = gas.density;
+  problem_.sound_speed.assign(n, gas.sound_speed);
+  const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
+  for (std::int64_t i = 0; i < n; ++i) {
+    problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
+    problem_.unknown[i] = problem_.takes_part[i] &&
+                          (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
+    problem_.carries_velocity[i] = isActive(p.kind[i]);
+    // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
+    // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
+    // P_B), so a (nearly) incompressible gas gets a regularising sound speed of 10 l0 / dt on the bubble's rows
+    // (a shift of about 1e-3 of the diagonal, which leaves the solve well conditioned).
+    if (roles_.enclosed_gas[i]) problem_.sound_speed[i] = std::min(gas.sound_speed, 10.0 * constants_.l0 / dt);
+  }
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_);
+  solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
+  report_.gas_ppe_unknowns = system_.particle_of.size();
+  gas_pressure_.assign(n, 0.0);
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    const double solved = pressure_unknowns_[r];
+    gas_pressure_[i] = (roles_.enclosed_gas[i] || closed) ? solved : std::max(0.0, solved);
+  }
+  extrapolateDummyPressure(gas_pressure_, gas.density, !closed);
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.open_gas[i]) continue;
+    p.pressure[i] = gas_pressure_[i];
+    p.number_density[i] = gas_number_density_[i];
+  }
+}
+
+// Correction of the gas with the gas system's pressures (the liquid is not moved by it).
+template <int D>
+void MpsSolver<D>::correctGas(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Gas)].density;
+  std::vector<Vec<D>> change(n, Vec<D>::Zero());
+  auto solvedPressure = [&](std::int32_t j) { return roles_.inGasSystem(j) || roles_.gas_side_wall[j]; };
+  auto carriesPressure = [&](std::int32_t j) { return isActive(p.kind[j]); };
+  // numerics.gas_correction_limit: |u'| dt <= limit l0 (a correction that would carry gas particles past their
+  // neighbours in one step comes from a pressure outlier, not from the flow).
+  const double limit = config_.numerics.gas_correction_limit * constants_.l0 / dt;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.inGasSystem(i)) continue;
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, neighbours_, constants_,
+                                          GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
+    if (limit > 0.0 && change[i].norm() > limit) change[i] *= limit / change[i].norm();
+  }
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles_.inGasSystem(i)) continue;
+    if (!roles_.enclosed_gas[i]) p.velocity[i] += change[i];
+    p.position[i] += dt * change[i];
+  }
+}
+
+// Entrained gas below a bubble's resolution rises through the water by exchange (entrained_gas_rise.hpp).
+template <int D>
+void MpsSolver<D>::riseEntrainedGas(double dt) {
+  const double speed = config_.numerics.entrained_gas_rise_speed;
+  if (speed <= 0.0 || gravity_.norm() == 0.0) return;
+  const Vec<D> up = -gravity_ / gravity_.norm();
+  report_.entrained_gas_swaps = mistfall::riseEntrainedGas<D>(state_.particles, neighbours_, regions_, roles_, up,
+                                                              constants_.l0, speed, dt, state_.step);
+}
+
+// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp).
+template <int D>
+void MpsSolver<D>::moveBubbleGas(double dt) {
+  extendVelocityIntoBubbles<D>(state_.particles, neighbours_, roles_, constants_.re_number_density, dt);
+}
+
+#define MISTFALL_INSTANTIATE(D)                              \
+  template void MpsSolver<D>::solveGasPressure(double);     \
+  template void MpsSolver<D>::correctGas(double);           \
+  template void MpsSolver<D>::riseEntrainedGas(double);     \
+  template void MpsSolver<D>::moveBubbleGas(double);
+MISTFALL_INSTANTIATE(2)
+MISTFALL_INSTANTIATE(3)
+#undef MISTFALL_INSTANTIATE
+
+}  // namespace mistfall

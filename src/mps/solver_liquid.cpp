@@ -1,0 +1,151 @@
+// The liquid's pressure system and correction, eqs. (5), (7), (9) (the step's stages `computeLiquidNumberDensity`,
+// `solveLiquidPressure`, `extrapolateDummyPressure`, `correctLiquid` of MpsSolver, solver.hpp): liquid and walls
+// carry unknowns, each bubble one merged unknown (bubble_pressure.hpp); open gas is invisible to the liquid.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mps/bubble_pressure.hpp"
+#include "mps/gradient.hpp"
+#include "mps/number_density.hpp"
+#include "mps/solver.hpp"
+
+namespace mistfall {
+
+// n* of the liquid system: open gas does not count (the liquid next to it is a free surface).
+template <int D>
+void MpsSolver<D>::computeLiquidNumberDensity() {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  p.number_density.resize(n);
+  const auto& in_system = roles_.in_liquid_system;
+  auto counts = [&](std::int32_t j) { return in_system[j] != 0; };
+  const double re = constants_.re_number_density;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i)
+    p.number_density[i] = in_system[i] ? numberDensityAt<D>(i, p.position, neighbours_, re, counts) : 0.0;
+}
+
+// The liquid system: eq. (9) for liquid and walls (one density), with one unknown per bubble (bubble_pressure.hpp):
+// enclosed gas holds its bubble's pressure P_B and pushes on the liquid with it (the force of eq. (7)).
+template <int D>
+void MpsSolver<D>::solveLiquidPressure(double dt) {
+  auto& p = state_.particles;
+  const std::size_t n = p.size();
+  const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
+  const PhaseProperties& liquid = phases_[static_cast<int>(Phase::Liquid)];
+  const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
+  problem_.takes_part.assign(n, 0);
+  problem_.unknown.assign(n, 0);
+  problem_.carries_velocity = roles_.in_liquid_system;
+  problem_.density = liquid.density;
+  problem_.sound_speed.assign(n, liquid.sound_speed);
+  // One group (merged unknown) per bubble, numbered in region order; its initial guess is the bubble's pressure
+  // from the last step (its particles all hold it).
+  std::vector<std::int32_t> group_of(n, -1), group_of_region(regions_.regionCount(), -1);
+  std::vector<double> group_shift, group_guess;
+  const double bubble_shift = std::isfinite(gas.sound_speed)
+                                  ? liquid.density / (gas.density * dt * dt * gas.sound_speed * gas.sound_speed)
+                                  : 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = p.kind[i];
+    problem_.takes_part[i] = roles_.in_liquid_system[i] && hasPressureUnknown(k);
+    if (roles_.enclosed_gas[i]) {
+      problem_.unknown[i] = 1;
+      problem_.sound_speed[i] = std::numeric_limits<double>::infinity();
+      auto& group = group_of_region[regions_.region_of[i]];
+      if (group < 0) {
+        group = static_cast<std::int32_t>(group_shift.size());
+        group_shift.push_back(0.0);
+        group_guess.push_back(p.pressure[i]);
+      }
+      group_of[i] = group;
+      group_shift[group] += bubble_shift;
+    } else {
+      problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
+                            hasFullNeighbourhood(i, roles_.in_liquid_system);
+    }
+  }
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
+  lumpPressureGroups(system_, group_of, group_shift, lumped_);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(lumped_.matrix.rows());
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    x[lumped_.column_of_row[r]] = group_of[i] >= 0 ? group_guess[group_of[i]] : p.pressure[i];
+  }
+  solveLinear(lumped_.matrix, lumped_.rhs, x, "liquid", report_.ppe_iterations);
+  report_.ppe_unknowns = lumped_.matrix.rows();
+  // Negative liquid pressures are set to zero (standard MPS: the liquid does not sustain tension); a bubble keeps
+  // its pressure (below zero it is larger than at rest and pulls the liquid in).
+  for (std::size_t i = 0; i < n; ++i)
+    if (roles_.in_liquid_system[i]) p.pressure[i] = 0.0;
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    const double value = x[lumped_.column_of_row[r]];
+    p.pressure[i] = group_of[i] >= 0 ? value : std::max(0.0, value);
+  }
+}
+
+// Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
+// gradient (without them the min-pressure term pushes that fluid into the wall). Each takes the pressure of its
+// nearest wall particle, extrapolated hydrostatically: p_d = p_w + rho g . (r_d - r_w), clamped at 0 when `clamp`
+// (gas in a closed box may be below the ambient: numerics.gas_domain).
+template <int D>
+void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, double rho, bool clamp) const {
+  const auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Dummy) continue;
+    double best = std::numeric_limits<double>::infinity();
+    std::int32_t nearest = -1;
+    for (auto s = neighbours_.begin(i); s < neighbours_.end(i); ++s) {
+      const auto j = neighbours_.indices[s];
+      if (p.kind[j] != ParticleKind::Wall) continue;
+      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
+      if (r2 < best) best = r2, nearest = j;
+    }
+    const double extrapolated =
+        nearest < 0 ? 0.0 : pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]);
+    pressure[i] = clamp ? std::max(0.0, extrapolated) : extrapolated;
+  }
+}
+
+// Correction of the liquid: u' = -dt (1/rho_l) <grad p> (gradient.hpp, minimum-pressure form), u = u* + u', r = r* + dt u'.
+// Enclosed gas pushes with its bubble's pressure but is moved by the gas system.
+template <int D>
+void MpsSolver<D>::correctLiquid(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+  std::vector<Vec<D>> change(n, Vec<D>::Zero());
+  const auto& in_system = roles_.in_liquid_system;
+  auto solvedPressure = [&](std::int32_t j) {
+    return in_system[j] && hasPressureUnknown(p.kind[j]);
+  };
+  auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_,
+                                          GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
+    p.velocity[i] += change[i];
+    p.position[i] += dt * change[i];
+  }
+}
+
+#define MISTFALL_INSTANTIATE(D)                                                                   \
+  template void MpsSolver<D>::computeLiquidNumberDensity();                                      \
+  template void MpsSolver<D>::solveLiquidPressure(double);                                       \
+  template void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>&, double, bool) const; \
+  template void MpsSolver<D>::correctLiquid(double);
+MISTFALL_INSTANTIATE(2)
+MISTFALL_INSTANTIATE(3)
+#undef MISTFALL_INSTANTIATE
+
+}  // namespace mistfall
