@@ -367,3 +367,27 @@ TEST(EnclosedGas, RandomGasMatchesBruteForce2D) { checkAgainstBruteForce<2>(30);
 TEST(EnclosedGas, RandomGasMatchesBruteForce3D) { checkAgainstBruteForce<3>(9); }
 TEST(EnclosedGas, ThreadCountIndependent2D) { checkThreadCountIndependence<2>(40); }
 TEST(EnclosedGas, ThreadCountIndependent3D) { checkThreadCountIndependence<3>(12); }
+
+// The join radius (numerics.gas_region_link): two gas particles in water with one water particle between them
+// (2 l0 apart) are one region when joined at the number-density radius 2.1 l0 and two at 1.5 l0; the gas of a
+// lattice bubble (neighbours at l0 and 1.41 l0) stays one region at 1.5 l0; every region is enclosed either way.
+TEST(GasRegions, JoinRadiusSplitsGasSeparatedByOneWaterParticle) {
+  const Index<2> lo(-5, -5), hi(5, 5);
+  const auto p = makeLattice<2>(lo, hi, [](const Index<2>& k) {
+    return (k == Index<2>(-1, 0) || k == Index<2>(1, 0)) ? kGas : kLiquid;
+  });
+  const auto nl = neighbours<2>(p);
+  GasRegions wide, tight;
+  findGasRegions<2>(p, nl, kLink, kL0, wide);
+  findGasRegions<2>(p, nl, kLink, kL0, tight, nullptr, 0, 1.5 * kL0);
+  EXPECT_EQ(wide.regionCount(), 1u);
+  EXPECT_EQ(tight.regionCount(), 2u);
+  for (char e : tight.enclosed) EXPECT_TRUE(e);
+  const auto bubble = makeLattice<2>(Index<2>(-8, -8), Index<2>(8, 8), [](const Index<2>& k) {
+    return inBall<2>(k, Index<2>(0, 0), 3.0) ? kGas : kLiquid;
+  });
+  GasRegions one;
+  findGasRegions<2>(bubble, neighbours<2>(bubble), kLink, kL0, one, nullptr, 0, 1.5 * kL0);
+  ASSERT_EQ(one.regionCount(), 1u);
+  EXPECT_TRUE(one.enclosed[0]);
+}

@@ -112,6 +112,8 @@ struct NumericsConfig {
   double entrained_gas_rise_speed = 0.0;
   // Largest move of a gas particle by its pressure correction in one step, / l0 (0 = no limit; docs/waterfall.md)
   double gas_correction_limit = 0.0;
+  // Gas particles closer than this (/ l0) belong to one gas region (enclosed_gas.hpp); 0 = radius_number_density
+  double gas_region_link = 0.0;
 };
 
 struct OutputConfig {

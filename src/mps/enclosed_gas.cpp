@@ -56,7 +56,7 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0) {
 
 template <int D>
 void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
-                    const std::vector<char>* was_enclosed, std::size_t closed_small_region) {
+                    const std::vector<char>* was_enclosed, std::size_t closed_small_region, double join_radius) {
   const std::size_t n = p.size();
   if (nl.particleCount() != n)
     throw std::invalid_argument("gas regions: neighbour list holds " + std::to_string(nl.particleCount()) +
@@ -85,13 +85,15 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
     open[i] = foreign || (neighbours < min_neighbours && !exempt);
   }
 
-  // Components, serially in index order (deterministic whatever the thread count).
+  // Components, serially in index order (deterministic whatever the thread count), joining gas particles closer
+  // than join_radius (0: the link radius).
+  const double join2 = join_radius > 0.0 ? join_radius * join_radius : link2;
   MinRootUnionFind uf(n);
   for (std::int64_t i = 0; i < count; ++i) {
     if (!gas(i)) continue;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (gas(j) && (p.position[j] - p.position[i]).squaredNorm() < link2) uf.join(static_cast<std::int32_t>(i), j);
+      if (gas(j) && (p.position[j] - p.position[i]).squaredNorm() < join2) uf.join(static_cast<std::int32_t>(i), j);
     }
   }
 
@@ -167,9 +169,9 @@ std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegion
 }
 
 template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*, std::size_t);
+                                   const std::vector<char>*, std::size_t, double);
 template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*, std::size_t);
+                                   const std::vector<char>*, std::size_t, double);
 template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
 template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);
 

@@ -4,7 +4,10 @@
 //
 // Definitions (R = link_radius, the number-density radius re = 2.1 l0 in the solver):
 //  * Gas particle: kind Fluid and phase Gas. Escaped particles (and every other kind) are never gas.
-//  * Two gas particles are linked when |r_j - r_i| < R. A gas region is a connected component of that graph.
+//  * Two gas particles are linked when |r_j - r_i| < J, the join radius (`join_radius`, numerics.gas_region_link;
+//    R when 0). A gas region is a connected component of that graph. With J = R = 2.1 l0 two gas particles with
+//    one water particle between them (2 l0 apart) are linked, so a chain of air through aerated water joins the
+//    water's air pockets to the air above; J = 1.5 l0 links only touching particles (diagonals 1.41 l0).
 //    Region ids are 0, 1, ... in the order of the smallest particle index of each component (deterministic).
 //  * A region is enclosed (a bubble) when both hold for every one of its particles i:
 //      - every active non-gas particle j with |r_j - r_i| < R is a liquid fluid particle (no wall, no dummy);
@@ -64,7 +67,8 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0);
 
 template <int D>
 void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
-                    const std::vector<char>* was_enclosed = nullptr, std::size_t closed_small_region = 0);
+                    const std::vector<char>* was_enclosed = nullptr, std::size_t closed_small_region = 0,
+                    double join_radius = 0.0);
 
 template <int D>
 std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegions& r, double l0);

@@ -118,7 +118,7 @@ void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
     auto& p = state_.particles;
     findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed,
-                      closedSmallRegion());
+                      closedSmallRegion(), gasRegionLink());
     // Gas that was open and is enclosed now joins the water's system and is carried by the water.
     std::vector<char> joined(p.size(), 0);
     bool any_joined = false;
@@ -146,6 +146,12 @@ std::size_t MpsSolver<D>::closedSmallRegion() const {
              : 0;
 }
 
+// numerics.gas_region_link in metres (0: findGasRegions joins at the number-density radius).
+template <int D>
+double MpsSolver<D>::gasRegionLink() const {
+  return config_.numerics.gas_region_link * constants_.l0;
+}
+
 template <int D>
 const NeighborList& MpsSolver<D>::currentNeighbours() {
   buildNeighbours();
@@ -158,7 +164,7 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   buildNeighbours();
   GasRegions regions;
   findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
-                    &state_.particles.enclosed, closedSmallRegion());
+                    &state_.particles.enclosed, closedSmallRegion(), gasRegionLink());
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 

@@ -82,6 +82,7 @@ class MpsSolver {
   void collide(double dt);
   void findBubbles();
   std::size_t closedSmallRegion() const;
+  double gasRegionLink() const;
   void computeLiquidNumberDensity();
   void solveLiquidPressure(double dt);
   void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
