@@ -17,6 +17,7 @@
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/solver.hpp"
 #include "support/run_case.hpp"
+#include "support/tank_case.hpp"
 
 using namespace mistfall;
 
@@ -25,51 +26,12 @@ namespace {
 constexpr int kColumns = 5, kPockets = 2 * kColumns;
 constexpr double kLowRow = 0.0125, kHighRow = 0.0275, kStartHeight = 0.5 * (kLowRow + kHighRow);
 
-// A 2D tank 0.1 m wide, water 0.06 m deep under air to 0.09 m (open top), l0 = 5 mm, with ten single gas
+// The tank of support/tank_case.hpp (water 0.06 m deep under air to 0.09 m, l0 = 5 mm) with ten single gas
 // particles in two rows (1.25 and 2.75 cm above the floor), 1.5 cm apart and at least 1.75 cm from the side walls
 // (gas within re of a wall is not enclosed: enclosed_gas.hpp).
 std::string entrainedCase(double rise_speed) {
-  std::string text = R"(
-[case]
-name = "entrained_gas"
-dimension = 2
-[domain]
-min = [-0.02, -0.02]
-max = [0.12, 0.12]
-[numerics]
-particle_spacing = 0.005
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-entrained_gas_rise_speed = )" + std::to_string(rise_speed) + R"(
-[output]
-end_time = 1.0
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, 0.0]
-max = [0.1, 0.09]
-[[region]]
-name = "water"
-material = "water"
-min = [0.0, 0.0]
-max = [0.1, 0.06]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.12, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.0, 0.09]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, -0.02]
-max = [0.12, 0.09]
-)";
+  std::string text = test_support::tankCase("entrained_gas", true, false, "",
+                                            "entrained_gas_rise_speed = " + std::to_string(rise_speed) + "\n");
   for (int k = 0; k < kPockets; ++k)
     text += "[[region]]\nname = \"pocket" + std::to_string(k) + "\"\nmaterial = \"gas\"\nshape = \"circle\"\n" +
             "center = [" + std::to_string(0.0175 + 0.015 * (k % kColumns)) + ", " +

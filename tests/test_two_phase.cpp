@@ -18,6 +18,7 @@
 #include "mps/pressure_poisson.hpp"
 #include "support/exact_solve.hpp"
 #include "support/run_case.hpp"
+#include "support/tank_case.hpp"
 #include "support/same_particles.hpp"
 #include "mps/solver.hpp"
 
@@ -27,50 +28,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A 2D tank 0.1 m wide, water 0.06 m deep, air up to 0.09 m, l0 = 5 mm; optionally a gas disc (bubble) in the
-// water and optionally without the air. Mixed source term (still water, as cases/hydrostatic.toml).
-std::string tankCase(bool air, bool bubble, const std::string& gas_sound_speed = "340.0") {
-  std::string text = R"(
-[case]
-name = "two_phase_tank"
-dimension = 2
-[domain]
-min = [-0.02, -0.02]
-max = [0.12, 0.12]
-[physics.gas]
-sound_speed = )" + gas_sound_speed + R"(
-[numerics]
-particle_spacing = 0.005
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-[output]
-end_time = 1.0
-)";
-  if (air) text += "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.09]\n";
-  text += "[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.06]\n";
-  if (bubble)
-    text += "[[region]]\nname = \"bubble\"\nmaterial = \"gas\"\nshape = \"circle\"\ncenter = [0.05, 0.03]\n"
-            "radius = 0.0125\n";
-  text += R"(
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.12, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.0, 0.09]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, -0.02]
-max = [0.12, 0.09]
-)";
-  return text;
-}
+// The tank of support/tank_case.hpp with gas of c = 340 m/s, optionally without the air or the bubble.
+std::string tankCase(bool air, bool bubble) { return test_support::tankCase("two_phase_tank", air, bubble, "340.0"); }
 
 struct TankRun : test_support::SolverRun<2> {
   explicit TankRun(const std::string& text) : SolverRun(text, "two_phase_tank.toml") {}

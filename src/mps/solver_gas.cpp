@@ -87,7 +87,8 @@ void MpsSolver<D>::correctGas(double dt) {
     if (!roles_.inGasSystem(i)) continue;
     change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
-    if (limit > 0.0 && change[i].norm() > limit) change[i] *= limit / change[i].norm();
+    const double size = change[i].norm();
+    if (limit > 0.0 && size > limit) change[i] *= limit / size;
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
