@@ -86,12 +86,7 @@ assert abs(back_wall - 0.30) < 1e-9, back_wall
 assert all(abs(a + b) < 1e-9 for a, b in zip(fwd, rev)), (fwd, rev)
 PY
 
-expect_fail() {  # exit code 1 and a one-line message naming the problem, no traceback
-  local want=$1; shift
-  if "$py" "$tool" "$@" 2>"$work/err" >/dev/null; then echo "FAIL: accepted $*" >&2; exit 1; fi
-  grep -q "$want" "$work/err" || { cat "$work/err" >&2; echo "FAIL: message lacks '$want'" >&2; exit 1; }
-  ! grep -q Traceback "$work/err" || { cat "$work/err" >&2; echo "FAIL: traceback" >&2; exit 1; }
-}
+source "$(dirname "${BASH_SOURCE[0]}")/expect_fail.sh"
 mkdir -p "$work/empty"
 expect_fail "no grid fields" "$work/empty"
 expect_fail "no field frame with 5" "$work/run" --from 5 --out "$work/bad"

@@ -40,12 +40,7 @@ assert t == [0.0, 0.01, 0.02] and p == [0.0, 500.0, 560.0] and y == [0.09, 0.095
 assert divergence_time(sys.argv[2]) is None
 PY
 
-expect_fail() {  # exit code 1 and a one-line message naming the problem
-  local want=$1; shift
-  if "$py" "$tool" "$@" 2>"$work/err"; then echo "FAIL: accepted $*" >&2; exit 1; fi
-  grep -q "$want" "$work/err" || { cat "$work/err" >&2; echo "FAIL: message lacks '$want'" >&2; exit 1; }
-  ! grep -q Traceback "$work/err" || { cat "$work/err" >&2; echo "FAIL: traceback" >&2; exit 1; }
-}
+source "$(dirname "${BASH_SOURCE[0]}")/expect_fail.sh"
 mkdir -p "$work/empty"
 expect_fail "bubbles.csv does not exist" "$work/empty" --out "$work/x.png"
 expect_fail "2 --label for 1" "$work/a" --label x --label y --out "$work/x.png"

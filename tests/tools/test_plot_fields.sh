@@ -99,12 +99,7 @@ cut, x, y, note = plane(g3, c)
 assert cut["gas_sps_k"].shape == (7, 9) and "middle slice z = 0.01" in note, note
 PY
 
-expect_fail() {  # exit code 1 and a one-line message naming the problem, no traceback
-  local want=$1; shift
-  if "$py" "$tool" "$@" 2>"$work/err" >/dev/null; then echo "FAIL: accepted $*" >&2; exit 1; fi
-  grep -q "$want" "$work/err" || { cat "$work/err" >&2; echo "FAIL: message lacks '$want'" >&2; exit 1; }
-  ! grep -q Traceback "$work/err" || { cat "$work/err" >&2; echo "FAIL: traceback" >&2; exit 1; }
-}
+source "$(dirname "${BASH_SOURCE[0]}")/expect_fail.sh"
 mkdir -p "$work/bad" "$work/empty"
 head -c 2000 "$work/frames/fields_00001.vti" > "$work/bad/cut.vti"
 expect_fail "missing </VTKFile> (truncated?)" "$work/bad/cut.vti" --out "$work/badpng"
