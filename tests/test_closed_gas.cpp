@@ -165,7 +165,7 @@ TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
     const auto& p = box.state.particles;
     const auto& nl = box.solver->currentNeighbours();
     GasRegions regions;
-    findGasRegions<2>(p, nl, box.solver->constants().re_number_density, 0.005, regions, nullptr, limit);
+    findGasRegions<2>(p, nl, box.solver->constants().re_number_density, 0.005, regions, {nullptr, limit});
     std::size_t pocket = 0, air = 0, pocket_enclosed = 0, air_enclosed = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!isGas(p.kind[i], p.phase[i])) continue;
@@ -183,7 +183,7 @@ TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
 // numerics.gas_correction_limit caps the move a gas particle's pressure correction makes in one step at limit l0:
 // one gas particle shot at 20 m/s through still air raises a pressure outlier that, unlimited, kicks its
 // neighbours by more than that; limited, no gas velocity changes by more than limit l0 / dt (besides g dt).
-TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlier) {
+TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlierAtASpeedThatDoesNotGrowAsTheStepShrinks) {
   std::string text = airBoxCase("closed", false);
   auto withLimit = [&](double limit) {
     std::string t = text;
@@ -191,8 +191,67 @@ TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlier) {
     return t;
   };
   EXPECT_HAS(test_support::errorOf(withLimit(1.5)), "numerics.gas_correction_limit");
-  const double limit = 0.02;
-  double largest_kick[2] = {0.0, 0.0};
+  const double limit = 0.02, l0 = 0.005, dt_max = 5e-4;
+  const double cap = limit * l0 / dt_max;  // 0.2 m/s
+  // One gas particle shot at 20 and at 80 m/s: the Courant step is 4 times shorter for the second. The capped
+  // kick of its neighbours stays at limit l0 / dt_max in both (a cap of limit l0 / dt would be 20 and 80 m/s).
+  for (double shot_speed : {20.0, 80.0}) {
+    double largest_kick[2] = {0.0, 0.0};
+    std::size_t capped = 0;
+    double dt = 0.0;
+    for (int limited = 0; limited < 2; ++limited) {
+      AirBox box(withLimit(limited ? limit : 0.0));
+      auto& p = box.state.particles;
+      std::size_t shot = p.size();
+      double best = 1e300;
+      for (std::size_t i = 0; i < p.size(); ++i) {  // the gas particle nearest (0.05, 0.06)
+        if (!isGas(p.kind[i], p.phase[i])) continue;
+        const double d = (p.position[i] - Vec<2>(0.05, 0.06)).norm();
+        if (d < best) best = d, shot = i;
+      }
+      p.velocity[shot] = Vec<2>(shot_speed, 0.0);
+      const std::vector<Vec<2>> before(p.velocity.begin(), p.velocity.end());
+      const auto& report = box.solver->step(1.0);
+      dt = report.dt;
+      if (limited) capped = report.gas_corrections_capped;
+      const Vec<2> gravity_change(0.0, -9.81 * dt);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (isGas(p.kind[i], p.phase[i]) && i != shot)
+          largest_kick[limited] =
+              std::max(largest_kick[limited], (p.velocity[i] - before[i] - gravity_change).norm());
+    }
+    EXPECT_NEAR(dt, 0.2 * l0 / shot_speed, 1e-12) << "the Courant step of the shot particle";
+    // (the air's viscosity adds about 1e-4 m/s to the capped kick)
+    EXPECT_LE(largest_kick[1], cap + 2e-3) << "shot at " << shot_speed << " m/s";
+    EXPECT_GT(largest_kick[0], 5.0 * cap) << "the unlimited kick must exceed the cap";
+    EXPECT_GT(capped, 0u) << "the step reports the capped corrections";
+    std::printf("shot at %.0f m/s (dt %.2e s): kick of the gas around it unlimited %.3f m/s, limited %.3f m/s "
+                "(cap %.3f m/s, %zu capped)\n",
+                shot_speed, dt, largest_kick[0], largest_kick[1], cap, capped);
+  }
+}
+
+// numerics.dispersed_gas_fraction is a fraction: outside [0, 1] the case is refused and the message names the key.
+TEST(ClosedGas, DispersedGasFractionOutsideItsRangeIsRefused) {
+  std::string text = airBoxCase("closed", false);
+  text.replace(text.find("gas_domain"), 10, "dispersed_gas_fraction = 1.5\ngas_domain");
+  const std::string error = test_support::errorOf(text);
+  EXPECT_HAS(error, "numerics.dispersed_gas_fraction");
+  EXPECT_HAS(error, "1.5");
+}
+
+// numerics.gas_speed_limit: a gas particle shot at 20 m/s through still closed air leaves its first step at the
+// limit (unlimited it keeps most of its speed), so the next Courant step is C l0 / limit again.
+TEST(ClosedGas, SpeedLimitHoldsAShotGasParticleAndTheTimeStep) {
+  std::string text = airBoxCase("closed", false);
+  auto withLimit = [&](double limit) {
+    std::string t = text;
+    t.replace(t.find("gas_domain"), 10, "gas_speed_limit = " + std::to_string(limit) + "\ngas_domain");
+    return t;
+  };
+  EXPECT_HAS(test_support::errorOf(withLimit(2000.0)), "numerics.gas_speed_limit");
+  const double limit = 5.0, l0 = 0.005;
+  double fastest[2] = {0.0, 0.0}, second_dt[2] = {0.0, 0.0};
   for (int limited = 0; limited < 2; ++limited) {
     AirBox box(withLimit(limited ? limit : 0.0));
     auto& p = box.state.particles;
@@ -204,16 +263,16 @@ TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlier) {
       if (d < best) best = d, shot = i;
     }
     p.velocity[shot] = Vec<2>(20.0, 0.0);
-    const std::vector<Vec<2>> before(p.velocity.begin(), p.velocity.end());
-    const double dt = box.solver->step(1.0).dt;
-    const Vec<2> gravity_change(0.0, -9.81 * dt);
+    const auto& report = box.solver->step(1.0);
+    EXPECT_NEAR(report.dt, 0.2 * l0 / 20.0, 1e-12);
+    if (limited) EXPECT_GE(report.gas_corrections_capped, 1u);
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (isGas(p.kind[i], p.phase[i]) && i != shot)
-        largest_kick[limited] = std::max(largest_kick[limited], (p.velocity[i] - before[i] - gravity_change).norm());
-    // (the air's viscosity adds about 1e-4 m/s to the capped kick)
-    if (limited) EXPECT_LE(largest_kick[1], limit * 0.005 / dt * 1.001);
-    else EXPECT_GT(largest_kick[0], 1.5 * limit * 0.005 / dt) << "the unlimited kick must exceed the limit";
+      if (isGas(p.kind[i], p.phase[i])) fastest[limited] = std::max(fastest[limited], p.velocity[i].norm());
+    second_dt[limited] = box.solver->step(1.0).dt;
   }
-  std::printf("kick of the gas around a 20 m/s particle: unlimited %.3f m/s, limited %.3f m/s\n", largest_kick[0],
-              largest_kick[1]);
+  EXPECT_GT(fastest[0], 10.0) << "unlimited, the shot particle keeps most of its speed";
+  EXPECT_LE(fastest[1], limit * (1.0 + 1e-12));
+  EXPECT_NEAR(second_dt[1], 0.2 * l0 / limit, 1e-3 * second_dt[1]);
+  std::printf("gas shot at 20 m/s, after one step: unlimited %.2f m/s, limited %.2f m/s; next dt %.2e / %.2e s\n",
+              fastest[0], fastest[1], second_dt[0], second_dt[1]);
 }

@@ -379,7 +379,7 @@ TEST(GasRegions, JoinRadiusSplitsGasSeparatedByOneWaterParticle) {
   const auto nl = neighbours<2>(p);
   GasRegions wide, tight;
   findGasRegions<2>(p, nl, kLink, kL0, wide);
-  findGasRegions<2>(p, nl, kLink, kL0, tight, nullptr, 0, 1.5 * kL0);
+  findGasRegions<2>(p, nl, kLink, kL0, tight, {nullptr, 0, 1.5 * kL0});
   EXPECT_EQ(wide.regionCount(), 1u);
   EXPECT_EQ(tight.regionCount(), 2u);
   for (char e : tight.enclosed) EXPECT_TRUE(e);
@@ -387,7 +387,50 @@ TEST(GasRegions, JoinRadiusSplitsGasSeparatedByOneWaterParticle) {
     return inBall<2>(k, Index<2>(0, 0), 3.0) ? kGas : kLiquid;
   });
   GasRegions one;
-  findGasRegions<2>(bubble, neighbours<2>(bubble), kLink, kL0, one, nullptr, 0, 1.5 * kL0);
+  findGasRegions<2>(bubble, neighbours<2>(bubble), kLink, kL0, one, {nullptr, 0, 1.5 * kL0});
   ASSERT_EQ(one.regionCount(), 1u);
   EXPECT_TRUE(one.enclosed[0]);
+}
+
+// Dispersed gas (numerics.dispersed_gas_fraction): a chain of single gas particles through the water, each one
+// water particle from the next (2 l0 apart) and the top one 2 l0 under the air, joins the air above at the plain
+// link and is open gas with it. Counted as dispersed (10 of its 12 neighbours are water), every particle of the
+// chain is a region of its own, enclosed in the water, while the air (whose lowest row has 4 water neighbours
+// of 12) stays one open region.
+TEST(GasRegions, DispersedGasDoesNotJoinTheWatersAirToTheAirAbove) {
+  const Index<2> lo(-6, -9), hi(6, 4);
+  auto inChain = [](const Index<2>& k) { return k[0] == 0 && (k[1] == -1 || k[1] == -3 || k[1] == -5); };
+  const auto p = makeLattice<2>(lo, hi, [&](const Index<2>& k) {
+    return (k[1] >= 1 || inChain(k)) ? kGas : kLiquid;  // air from row 1 up; its top row borders open space
+  });
+  const auto nl = neighbours<2>(p);
+  GasRegions plain, dispersed;
+  findGasRegions<2>(p, nl, kLink, kL0, plain);
+  GasRegionOptions options;
+  options.dispersed_fraction = 0.5;
+  findGasRegions<2>(p, nl, kLink, kL0, dispersed, options);
+  const std::size_t top = p.size() - 1;  // the last lattice point: the air's top row
+  const std::int32_t air_plain = plain.region_of[top], air_dispersed = dispersed.region_of[top];
+  std::size_t chain = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isGas(p.kind[i], p.phase[i])) continue;
+    if (p.position[i][1] > origin<2>()[1]) {  // the air
+      EXPECT_EQ(plain.region_of[i], air_plain);
+      EXPECT_EQ(dispersed.region_of[i], air_dispersed) << "the air stays one region";
+      continue;
+    }
+    ++chain;
+    EXPECT_EQ(plain.region_of[i], air_plain) << "plain link: the chain belongs to the air";
+    EXPECT_NE(dispersed.region_of[i], air_dispersed);
+    EXPECT_TRUE(dispersed.enclosed_particle[i]) << "dispersed: the chain's gas is enclosed in the water";
+  }
+  EXPECT_EQ(chain, 3u);
+  EXPECT_FALSE(plain.enclosed[air_plain]);
+  EXPECT_FALSE(dispersed.enclosed[air_dispersed]);
+  EXPECT_EQ(dispersed.regionCount(), 4u) << "the air and three regions of one particle";
+  // At fraction 0.95 (10 or 11 of 12 falls short) the chain is not dispersed and joins the air as before.
+  options.dispersed_fraction = 0.95;
+  GasRegions strict;
+  findGasRegions<2>(p, nl, kLink, kL0, strict, options);
+  EXPECT_EQ(strict.regionCount(), 1u);
 }

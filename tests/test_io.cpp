@@ -159,7 +159,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(
       "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
-      "inflow,created,removed,inflow_rate,outflow_rate",
+      "inflow,created,removed,inflow_rate,outflow_rate,gas_capped",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -170,6 +170,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.max_speed = 1.25; r.kinetic_energy = 0.5; r.ppe_iterations = 42; r.ppe_residual = 1e-9; r.wall_seconds = 12.5;
   r.bubbles = 2; r.bubble_particles = 77; r.bubble_pressure = 563.25; r.bubble_y = 0.0925; r.bubble_size = 4.8e-4;
   r.inflow = 120; r.created = 4000; r.removed = 3900; r.inflow_rate = 6400.5; r.outflow_rate = 6399.25;
+  r.gas_capped = 31;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -192,6 +193,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(3900, rows[0].removed);
   EXPECT_EQ(6400.5, rows[0].inflow_rate);
   EXPECT_EQ(6399.25, rows[0].outflow_rate);
+  EXPECT_EQ(31, rows[0].gas_capped);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -114,6 +114,11 @@ struct NumericsConfig {
   double gas_correction_limit = 0.0;
   // Gas particles closer than this (/ l0) belong to one gas region (enclosed_gas.hpp); 0 = radius_number_density
   double gas_region_link = 0.0;
+  // Gas with at least this fraction of liquid among its neighbours is mixed into the water and joins no gas region
+  // (enclosed_gas.hpp); 0 = off
+  double dispersed_gas_fraction = 0.0;
+  // [m/s] largest speed of open gas after its pressure correction (solver_gas.cpp); 0 = no limit
+  double gas_speed_limit = 0.0;
 };
 
 struct OutputConfig {

@@ -137,7 +137,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
-                "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link"});
+                "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
+                "dispersed_gas_fraction", "gas_speed_limit"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   rd.number(nm, np, "radius_number_density", {1.5, 5.0, false, false}, n.radius_number_density);
@@ -163,6 +164,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "entrained_gas_rise_speed", {0.0, 10.0, false, false}, n.entrained_gas_rise_speed);
   rd.number(nm, np, "gas_correction_limit", {0.0, 1.0, false, false}, n.gas_correction_limit);
   rd.number(nm, np, "gas_region_link", {0.0, 5.0, false, false}, n.gas_region_link);
+  rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
+  rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   if (n.gas_domain == GasDomain::Closed && !std::isfinite(c.physics.gas.sound_speed))
     rd.fail("numerics.gas_domain = \"closed\" needs a finite physics.gas.sound_speed (a closed incompressible gas "
             "has no pressure level); allowed \"open\", or a sound speed > 0");

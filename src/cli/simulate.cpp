@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
@@ -133,6 +134,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   }
   const double wall_start = omp_get_wtime();
   StepReport last;
+  std::int64_t gas_capped = 0;  // since the last output
 
   auto writeOutput = [&]() {
     const std::string name = frameName(state.next_frame);
@@ -147,6 +149,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
       if (texture) texture->frame<D>(frameNumber(state.next_frame), grid, state.particles, category, state.time);
     }
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
+    row.gas_capped = std::exchange(gas_capped, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -168,6 +171,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
       const double next_output = std::min(end_time, state.next_frame * interval);
       while (state.time < next_output - eps) {
         last = solver.step(next_output);
+        gas_capped += static_cast<std::int64_t>(last.gas_corrections_capped);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

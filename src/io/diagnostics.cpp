@@ -80,6 +80,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::removed>("removed"),
     column<&DiagnosticsRow::inflow_rate, 9>("inflow_rate"),
     column<&DiagnosticsRow::outflow_rate, 9>("outflow_rate"),
+    column<&DiagnosticsRow::gas_capped>("gas_capped"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -33,6 +33,9 @@ struct DiagnosticsRow {
   std::size_t inflow = 0;
   std::int64_t created = 0, removed = 0;
   double inflow_rate = 0, outflow_rate = 0;
+  // Gas pressure corrections cut by numerics.gas_correction_limit or gas_speed_limit since the previous row
+  // (particle-steps).
+  std::int64_t gas_capped = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

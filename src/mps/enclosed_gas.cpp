@@ -56,7 +56,10 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0) {
 
 template <int D>
 void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
-                    const std::vector<char>* was_enclosed, std::size_t closed_small_region, double join_radius) {
+                    const GasRegionOptions& options) {
+  const std::vector<char>* was_enclosed = options.was_enclosed;
+  const std::size_t closed_small_region = options.closed_small_region;
+  const double join_radius = options.join_radius;
   const std::size_t n = p.size();
   if (nl.particleCount() != n)
     throw std::invalid_argument("gas regions: neighbour list holds " + std::to_string(nl.particleCount()) +
@@ -66,12 +69,12 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
   const auto gas = [&](std::int64_t j) { return isGas(p.kind[j], p.phase[j]); };
 
   // Per gas particle: does it border something other than liquid (wall, dummy, open space)?
-  std::vector<char> open(n, 0), touches_liquid(n, 0);
+  std::vector<char> open(n, 0), touches_liquid(n, 0), dispersed(n, 0);
   const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < count; ++i) {
     if (!gas(i)) continue;
-    int neighbours = 0;
+    int neighbours = 0, liquid_neighbours = 0;
     bool foreign = false;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
@@ -79,8 +82,10 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
       ++neighbours;
       const bool liquid = p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid;
       if (!gas(j) && !liquid) foreign = true;
-      if (liquid) touches_liquid[i] = 1;
+      if (liquid) touches_liquid[i] = 1, ++liquid_neighbours;
     }
+    dispersed[i] = options.dispersed_fraction > 0.0 && neighbours > 0 &&
+                   liquid_neighbours >= options.dispersed_fraction * neighbours;
     const bool exempt = was_enclosed && static_cast<std::size_t>(i) < was_enclosed->size() && (*was_enclosed)[i];
     open[i] = foreign || (neighbours < min_neighbours && !exempt);
   }
@@ -90,10 +95,11 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
   const double join2 = join_radius > 0.0 ? join_radius * join_radius : link2;
   MinRootUnionFind uf(n);
   for (std::int64_t i = 0; i < count; ++i) {
-    if (!gas(i)) continue;
+    if (!gas(i) || dispersed[i]) continue;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (gas(j) && (p.position[j] - p.position[i]).squaredNorm() < join2) uf.join(static_cast<std::int32_t>(i), j);
+      if (gas(j) && !dispersed[j] && (p.position[j] - p.position[i]).squaredNorm() < join2)
+        uf.join(static_cast<std::int32_t>(i), j);
     }
   }
 
@@ -169,9 +175,9 @@ std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegion
 }
 
 template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*, std::size_t, double);
+                                const GasRegionOptions&);
 template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&,
-                                   const std::vector<char>*, std::size_t, double);
+                                const GasRegionOptions&);
 template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
 template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);
 

@@ -117,8 +117,8 @@ template <int D>
 void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
     auto& p = state_.particles;
-    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_, &p.enclosed,
-                      closedSmallRegion(), gasRegionLink());
+    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_,
+                      gasRegionOptions(&p.enclosed));
     // Gas that was open and is enclosed now joins the water's system and is carried by the water.
     std::vector<char> joined(p.size(), 0);
     bool any_joined = false;
@@ -137,19 +137,18 @@ void MpsSolver<D>::findBubbles() {
                          static_cast<std::size_t>(config_.numerics.bubble_min_particles));
 }
 
-// In a closed gas domain a gas region below a bubble's resolution that touches liquid is entrained gas
-// (enclosed_gas.hpp); 0 (off) when the gas borders open space.
+// The rules of findGasRegions from the case (enclosed_gas.hpp): in a closed gas domain a gas region below a
+// bubble's resolution that touches liquid is entrained gas (0, off, when the gas borders open space); the join
+// radius numerics.gas_region_link in metres (0: the number-density radius); numerics.dispersed_gas_fraction.
 template <int D>
-std::size_t MpsSolver<D>::closedSmallRegion() const {
-  return config_.numerics.gas_domain == GasDomain::Closed
-             ? static_cast<std::size_t>(config_.numerics.bubble_min_particles)
-             : 0;
-}
-
-// numerics.gas_region_link in metres (0: findGasRegions joins at the number-density radius).
-template <int D>
-double MpsSolver<D>::gasRegionLink() const {
-  return config_.numerics.gas_region_link * constants_.l0;
+GasRegionOptions MpsSolver<D>::gasRegionOptions(const std::vector<char>* was_enclosed) const {
+  GasRegionOptions options;
+  options.was_enclosed = was_enclosed;
+  if (config_.numerics.gas_domain == GasDomain::Closed)
+    options.closed_small_region = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
+  options.join_radius = config_.numerics.gas_region_link * constants_.l0;
+  options.dispersed_fraction = config_.numerics.dispersed_gas_fraction;
+  return options;
 }
 
 template <int D>
@@ -164,7 +163,7 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   buildNeighbours();
   GasRegions regions;
   findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
-                    &state_.particles.enclosed, closedSmallRegion(), gasRegionLink());
+                    gasRegionOptions(&state_.particles.enclosed));
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 

@@ -54,6 +54,7 @@ struct StepReport {
   std::int64_t created = 0;        // particles created by inflows in the step
   std::int64_t removed = 0;        // particles removed by outflows in the step
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
+  std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
 };
 
 template <int D>
@@ -81,8 +82,7 @@ class MpsSolver {
   void predict(double dt);
   void collide(double dt);
   void findBubbles();
-  std::size_t closedSmallRegion() const;
-  double gasRegionLink() const;
+  GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
   void solveLiquidPressure(double dt);
   void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
