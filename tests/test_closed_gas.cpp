@@ -180,16 +180,35 @@ TEST(ClosedGas, SmallPocketAgainstAWallIsEntrainedOnlyInAClosedDomain) {
   }
 }
 
+namespace {
+
+// The air box's case text with one more [numerics] key.
+std::string airBoxWith(const std::string& key, double value) {
+  std::string t = airBoxCase("closed", false);
+  t.replace(t.find("gas_domain"), 10, key + " = " + std::to_string(value) + "\ngas_domain");
+  return t;
+}
+
+// Gives the gas particle nearest (0.05, 0.06), in the middle of the box, the velocity (speed, 0); returns it.
+std::size_t shootGas(Particles<2>& p, double speed) {
+  std::size_t shot = p.size();
+  double best = 1e300;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isGas(p.kind[i], p.phase[i])) continue;
+    const double d = (p.position[i] - Vec<2>(0.05, 0.06)).norm();
+    if (d < best) best = d, shot = i;
+  }
+  p.velocity[shot] = Vec<2>(speed, 0.0);
+  return shot;
+}
+
+}  // namespace
+
 // numerics.gas_correction_limit caps the move a gas particle's pressure correction makes in one step at limit l0:
 // one gas particle shot at 20 m/s through still air raises a pressure outlier that, unlimited, kicks its
 // neighbours by more than that; limited, no gas velocity changes by more than limit l0 / dt (besides g dt).
 TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlierAtASpeedThatDoesNotGrowAsTheStepShrinks) {
-  std::string text = airBoxCase("closed", false);
-  auto withLimit = [&](double limit) {
-    std::string t = text;
-    t.replace(t.find("gas_domain"), 10, "gas_correction_limit = " + std::to_string(limit) + "\ngas_domain");
-    return t;
-  };
+  auto withLimit = [](double limit) { return airBoxWith("gas_correction_limit", limit); };
   EXPECT_HAS(test_support::errorOf(withLimit(1.5)), "numerics.gas_correction_limit");
   const double limit = 0.02, l0 = 0.005, dt_max = 5e-4;
   const double cap = limit * l0 / dt_max;  // 0.2 m/s
@@ -202,14 +221,7 @@ TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlierAtASpeedThatDoesNotG
     for (int limited = 0; limited < 2; ++limited) {
       AirBox box(withLimit(limited ? limit : 0.0));
       auto& p = box.state.particles;
-      std::size_t shot = p.size();
-      double best = 1e300;
-      for (std::size_t i = 0; i < p.size(); ++i) {  // the gas particle nearest (0.05, 0.06)
-        if (!isGas(p.kind[i], p.phase[i])) continue;
-        const double d = (p.position[i] - Vec<2>(0.05, 0.06)).norm();
-        if (d < best) best = d, shot = i;
-      }
-      p.velocity[shot] = Vec<2>(shot_speed, 0.0);
+      const std::size_t shot = shootGas(p, shot_speed);
       const std::vector<Vec<2>> before(p.velocity.begin(), p.velocity.end());
       const auto& report = box.solver->step(1.0);
       dt = report.dt;
@@ -233,9 +245,7 @@ TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlierAtASpeedThatDoesNotG
 
 // numerics.dispersed_gas_fraction is a fraction: outside [0, 1] the case is refused and the message names the key.
 TEST(ClosedGas, DispersedGasFractionOutsideItsRangeIsRefused) {
-  std::string text = airBoxCase("closed", false);
-  text.replace(text.find("gas_domain"), 10, "dispersed_gas_fraction = 1.5\ngas_domain");
-  const std::string error = test_support::errorOf(text);
+  const std::string error = test_support::errorOf(airBoxWith("dispersed_gas_fraction", 1.5));
   EXPECT_HAS(error, "numerics.dispersed_gas_fraction");
   EXPECT_HAS(error, "1.5");
 }
@@ -243,26 +253,14 @@ TEST(ClosedGas, DispersedGasFractionOutsideItsRangeIsRefused) {
 // numerics.gas_speed_limit: a gas particle shot at 20 m/s through still closed air leaves its first step at the
 // limit (unlimited it keeps most of its speed), so the next Courant step is C l0 / limit again.
 TEST(ClosedGas, SpeedLimitHoldsAShotGasParticleAndTheTimeStep) {
-  std::string text = airBoxCase("closed", false);
-  auto withLimit = [&](double limit) {
-    std::string t = text;
-    t.replace(t.find("gas_domain"), 10, "gas_speed_limit = " + std::to_string(limit) + "\ngas_domain");
-    return t;
-  };
+  auto withLimit = [](double limit) { return airBoxWith("gas_speed_limit", limit); };
   EXPECT_HAS(test_support::errorOf(withLimit(2000.0)), "numerics.gas_speed_limit");
   const double limit = 5.0, l0 = 0.005;
   double fastest[2] = {0.0, 0.0}, second_dt[2] = {0.0, 0.0};
   for (int limited = 0; limited < 2; ++limited) {
     AirBox box(withLimit(limited ? limit : 0.0));
     auto& p = box.state.particles;
-    std::size_t shot = p.size();
-    double best = 1e300;
-    for (std::size_t i = 0; i < p.size(); ++i) {  // the gas particle nearest (0.05, 0.06)
-      if (!isGas(p.kind[i], p.phase[i])) continue;
-      const double d = (p.position[i] - Vec<2>(0.05, 0.06)).norm();
-      if (d < best) best = d, shot = i;
-    }
-    p.velocity[shot] = Vec<2>(20.0, 0.0);
+    shootGas(p, 20.0);
     const auto& report = box.solver->step(1.0);
     EXPECT_NEAR(report.dt, 0.2 * l0 / 20.0, 1e-12);
     if (limited) EXPECT_GE(report.gas_corrections_capped, 1u);
