@@ -17,6 +17,7 @@
 #include "support/case_text.hpp"
 #include "support/cli.hpp"
 #include "support/scratch.hpp"
+#include "support/tank_walls.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
@@ -53,22 +54,7 @@ name = "water"
 material = "water"
 min = [0.0, 0.0]
 max = [0.1, 0.1]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.03, -0.03]
-max = [0.23, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.03, -0.03]
-max = [0.0, 0.2]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.2, -0.03]
-max = [0.23, 0.2]
-)";
+)" + mistfall::test_support::tankWalls(0.2, 0.2, 0.03);
 }
 
 

@@ -5,15 +5,16 @@
 // Definitions (R = link_radius, the number-density radius re = 2.1 l0 in the solver):
 //  * Gas particle: kind Fluid and phase Gas. Escaped particles (and every other kind) are never gas.
 //  * Two gas particles are linked when |r_j - r_i| < J, the join radius (`join_radius`, numerics.gas_region_link;
-//    R when 0), unless one of them is dispersed in the water. A gas region is a connected component of that graph. With J = R = 2.1 l0 two gas particles with
-//    one water particle between them (2 l0 apart) are linked, so a chain of air through aerated water joins the
-//    water's air pockets to the air above; J = 1.5 l0 links only touching particles (diagonals 1.41 l0).
+//    R when 0), unless one of them is dispersed in the water (below). A gas region is a connected component of
+//    that graph. With J = R = 2.1 l0 two gas particles with one water particle between them (2 l0 apart) are
+//    linked, so a chain of air through aerated water joins the water's air pockets to the air above; J = 1.5 l0
+//    links only touching particles (diagonals 1.41 l0). Region ids are 0, 1, ... in the order of the smallest
+//    particle index of each component (deterministic).
 //  * Dispersed gas (`dispersed_fraction` f > 0, numerics.dispersed_gas_fraction): a gas particle of which at least
 //    the fraction f of its active neighbours within R are liquid fluid particles is air mixed into the water (the
 //    churned plunge zone, a film of air between water particles). It links to no other gas particle, so it is a
 //    region of its own, and a chain of such particles cannot join the water's air to the air above. Air next to a
 //    flat water surface has 4 liquid neighbours of 12 (1/3) in 2D, air in a slot one particle wide 8 of 12.
-//    Region ids are 0, 1, ... in the order of the smallest particle index of each component (deterministic).
 //  * A region is enclosed (a bubble) when both hold for every one of its particles i:
 //      - every active non-gas particle j with |r_j - r_i| < R is a liquid fluid particle (no wall, no dummy);
 //      - i has at least kEnclosedMinNeighbourFraction * full_count active neighbours (any kind) within R, where

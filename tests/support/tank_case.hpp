@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "tank_walls.hpp"
+
 namespace mistfall::test_support {
 
 // `gas_sound_speed`: the [physics.gas] sound_speed, or empty for no [physics.gas] table (the defaults);
@@ -21,24 +23,7 @@ inline std::string tankCase(const std::string& name, bool air, bool bubble, cons
   if (bubble)
     text += "[[region]]\nname = \"bubble\"\nmaterial = \"gas\"\nshape = \"circle\"\ncenter = [0.05, 0.03]\n"
             "radius = 0.0125\n";
-  text += R"(
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.12, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.0, 0.09]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, -0.02]
-max = [0.12, 0.09]
-)";
-  return text;
+  return text + tankWalls(0.1, 0.09, 0.02);
 }
 
 }  // namespace mistfall::test_support
