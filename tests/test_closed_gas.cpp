@@ -15,6 +15,7 @@
 #include "mps/solver.hpp"
 #include "support/case_text.hpp"
 #include "support/run_case.hpp"
+#include "support/tank_walls.hpp"
 
 using namespace mistfall;
 
@@ -47,28 +48,8 @@ end_time = 1.0
   text += "[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\nmax = [0.1, 0.02]\n";
   if (floor_pocket)  // two gas particles in the water's lower left corner, against the floor and the wall
     text += "[[region]]\nname = \"pocket\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.005]\n";
-  text += R"(
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.12, 0.0]
-[[region]]
-name = "lid"
-material = "wall"
-min = [-0.02, 0.1]
-max = [0.12, 0.12]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, 0.0]
-max = [0.0, 0.1]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, 0.0]
-max = [0.12, 0.1]
-)";
+  text += test_support::tankWalls(0.1, 0.1, 0.02);
+  text += "[[region]]\nname = \"lid\"\nmaterial = \"wall\"\nmin = [-0.02, 0.1]\nmax = [0.12, 0.12]\n";
   return text;
 }
 

@@ -4,10 +4,12 @@
 #include <sstream>
 #include <string>
 
+#include "tank_walls.hpp"
+
 namespace mistfall::test_support {
 
 // 2D dam break, l0 = 0.01: a 0.1 x 0.2 column (10 x 20 = 200 fluid particles) in a 0.3 m long tank with
-// 4-layer walls. `numerics_extra` / `output_extra` are appended to those tables.
+// 4-layer walls (tankWalls: floor, left, right). `numerics_extra` / `output_extra` are appended to those tables.
 inline std::string damBreakCase(double end_time = 0.1, double interval = 0.02, const std::string& numerics_extra = "",
                                 const std::string& output_extra = "") {
   std::ostringstream s;
@@ -34,24 +36,7 @@ material = "water"
 min = [0.0, 0.0]
 max = [0.1, 0.2]
 
-[[region]]
-name = "wall_bottom"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.34, 0.0]
-
-[[region]]
-name = "wall_left"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.0, 0.26]
-
-[[region]]
-name = "wall_right"
-material = "wall"
-min = [0.3, -0.04]
-max = [0.34, 0.26]
-)";
+)" << tankWalls(0.3, 0.26, 0.04);
   return s.str();
 }
 
