@@ -49,7 +49,7 @@ end_time = 1.0
   if (floor_pocket)  // two gas particles in the water's lower left corner, against the floor and the wall
     text += "[[region]]\nname = \"pocket\"\nmaterial = \"gas\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.005]\n";
   text += test_support::tankWalls(0.1, 0.1, 0.02);
-  text += "[[region]]\nname = \"lid\"\nmaterial = \"wall\"\nmin = [-0.02, 0.1]\nmax = [0.12, 0.12]\n";
+  text += test_support::wallRegion("lid", -0.02, 0.1, 0.12, 0.12);
   return text;
 }
 

@@ -17,17 +17,16 @@ inline std::string tomlFloat(double value) {
   return text;
 }
 
+// One 2D wall box [x0, y0]..[x1, y1] as a [[region]] table.
+inline std::string wallRegion(const std::string& name, double x0, double y0, double x1, double y1) {
+  return "[[region]]\nname = \"" + name + "\"\nmaterial = \"wall\"\nmin = [" + tomlFloat(x0) + ", " + tomlFloat(y0) +
+         "]\nmax = [" + tomlFloat(x1) + ", " + tomlFloat(y1) + "]\n";
+}
+
 inline std::string tankWalls(double width, double height, double thickness) {
-  std::string s;
-  auto wall = [&](const char* name, double x0, double y0, double x1, double y1) {
-    s += "[[region]]\nname = \"" + std::string(name) + "\"\nmaterial = \"wall\"\nmin = [" + tomlFloat(x0) + ", " +
-         tomlFloat(y0) + "]\nmax = [" + tomlFloat(x1) + ", " + tomlFloat(y1) + "]\n";
-  };
   const double t = thickness;
-  wall("floor", -t, -t, width + t, 0.0);
-  wall("left", -t, -t, 0.0, height);
-  wall("right", width, -t, width + t, height);
-  return s;
+  return wallRegion("floor", -t, -t, width + t, 0.0) + wallRegion("left", -t, -t, 0.0, height) +
+         wallRegion("right", width, -t, width + t, height);
 }
 
 }  // namespace mistfall::test_support
