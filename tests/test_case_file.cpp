@@ -144,12 +144,36 @@ TEST(CaseFile, PressureSourceKeys) {
   EXPECT_HAS(msg, "cases/x.toml: numerics.pressure_source = \"fast\" is not allowed");
   EXPECT_HAS(msg, "allowed \"standard\" or \"mixed\"");
 
-  for (const std::string v : {"0", "2"}) {
+  p = Parts{};
+  p.numerics += "pressure_source = \"mixed\"\nsource_relaxation = 0\n";  // the pure divergence source
+  EXPECT_DOUBLE_EQ(parseCase(p.text(), "t.toml").numerics.source_relaxation, 0.0);
+  for (const std::string v : {"-0.1", "2"}) {
     p = Parts{};
     p.numerics += "source_relaxation = " + v + "\n";
     msg = errorOf(p.text());
-    EXPECT_EQ(msg, "cases/x.toml: numerics.source_relaxation = " + v + " is out of range; allowed (0, 1]");
+    EXPECT_EQ(msg, "cases/x.toml: numerics.source_relaxation = " + v + " is out of range; allowed [0, 1]");
   }
+}
+
+TEST(CaseFile, SchemeKeys) {
+  EXPECT_EQ(parseCase(Parts{}.text(), "t.toml").numerics.scheme, Scheme::Paper);  // the default
+  Parts p;
+  p.numerics += "scheme = \"stabilised\"\npressure_source = \"mixed\"\nliquid_support_fraction = 0.25\n"
+                "gradient_correction_min_determinant = 0.5\n";
+  const CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_EQ(c.numerics.scheme, Scheme::Stabilised);
+  EXPECT_DOUBLE_EQ(c.numerics.liquid_support_fraction, 0.25);
+  EXPECT_DOUBLE_EQ(c.numerics.gradient_correction_min_determinant, 0.5);
+  // The stabilised walls act through the divergence source, which only the mixed source has.
+  p = Parts{};
+  p.numerics += "scheme = \"stabilised\"\n";
+  EXPECT_HAS(errorOf(p.text()), "numerics.scheme = \"stabilised\" needs numerics.pressure_source = \"mixed\"");
+  p = Parts{};
+  p.numerics += "scheme = \"fast\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"paper\" or \"stabilised\"");
+  p = Parts{};
+  p.numerics += "scheme = \"stabilised\"\npressure_source = \"mixed\"\nliquid_support_fraction = 1\n";
+  EXPECT_HAS(errorOf(p.text()), "numerics.liquid_support_fraction = 1 is out of range; allowed [0, 1)");
 }
 
 TEST(CaseFile, SyntaxErrorNamesFileLineAndColumn) {

@@ -224,3 +224,13 @@ TEST(CaseFileCircle, Errors) {
   p.regions = water + circle("c", "wall", "[0.75, 0.75]", "0.25") + circle("d", "water", "[0.75, 0.25]", "0.25");
   EXPECT_NO_THROW(parseCase(p.text(), "t.toml"));
 }
+
+// The stabilised scheme is built for water and walls only (docs/validation.md): a case with gas is refused.
+TEST(CaseFileGas, StabilisedSchemeRefusesGas) {
+  Parts p;
+  p.numerics += "scheme = \"stabilised\"\npressure_source = \"mixed\"\n";
+  p.regions += "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.5]\nmax = [0.5, 1.0]\n";
+  const std::string msg = errorOf(p.text());
+  EXPECT_HAS(msg, "numerics.scheme = \"stabilised\" is built and validated for water and walls only");
+  EXPECT_HAS(msg, "gas regions");
+}

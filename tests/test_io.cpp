@@ -159,7 +159,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(
       "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
-      "inflow,created,removed,inflow_rate,outflow_rate,gas_capped",
+      "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -171,6 +171,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.bubbles = 2; r.bubble_particles = 77; r.bubble_pressure = 563.25; r.bubble_y = 0.0925; r.bubble_size = 4.8e-4;
   r.inflow = 120; r.created = 4000; r.removed = 3900; r.inflow_rate = 6400.5; r.outflow_rate = 6399.25;
   r.gas_capped = 31;
+  r.collisions = 7; r.gradient_fallbacks = 8; r.thin_support = 9;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -194,6 +195,9 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(6400.5, rows[0].inflow_rate);
   EXPECT_EQ(6399.25, rows[0].outflow_rate);
   EXPECT_EQ(31, rows[0].gas_capped);
+  EXPECT_EQ(7, rows[0].collisions);
+  EXPECT_EQ(8, rows[0].gradient_fallbacks);
+  EXPECT_EQ(9, rows[0].thin_support);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -87,8 +87,22 @@ enum class GasDomain { Open, Closed };
 
 enum class PressureSource { Standard, Mixed };
 
+// The liquid's pressure scheme (docs/validation.md). Paper: the MPS of Koshizuka & Oka the paper uses (walls carry
+// pressure unknowns, dummies take the nearest wall's pressure extrapolated, the minimum-pressure gradient, p = 0 at
+// free-surface particles). Stabilised: mirrored walls (wall_mirror.hpp), the corrected gradient
+// (corrected_gradient.hpp), the first-order consistent Laplacian (laplacian_consistency.hpp) and the surface
+// particles' pressure half a spacing inside the surface (surface_pressure.hpp): still water is an exact equilibrium.
+enum class Scheme { Paper, Stabilised };
+
 struct NumericsConfig {
   double particle_spacing = 0.0;        // l0 [m]; required
+  Scheme scheme = Scheme::Paper;
+  // Stabilised scheme only (numerical thresholds; how often they act is counted in diagnostics.csv):
+  // a fluid particle carries a pressure unknown only if its liquid-side neighbours within the Laplacian radius give
+  // at least this fraction of n0 (below it the mirrored walls would dominate its row: it is a free surface)
+  double liquid_support_fraction = 0.3;
+  // the corrected gradient falls back to the standard form where det(C_i^-1) is below this (1 on a full lattice)
+  double gradient_correction_min_determinant = 0.3;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

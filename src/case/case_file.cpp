@@ -3,6 +3,7 @@
 // The checked TOML access is in toml_reader.cpp, the region geometry checks in case_regions.cpp.
 #include "case/case_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -134,13 +135,19 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const std::string np = "numerics";
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
-               {"particle_spacing", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
+               {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
+                "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
+  if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
+    n.scheme = s == 0 ? Scheme::Paper : Scheme::Stabilised;
+  rd.number(nm, np, "liquid_support_fraction", {0.0, 1.0, false, true}, n.liquid_support_fraction);
+  rd.number(nm, np, "gradient_correction_min_determinant", {0.0, 1.0, true, false},
+            n.gradient_correction_min_determinant);
   rd.number(nm, np, "radius_number_density", {1.5, 5.0, false, false}, n.radius_number_density);
   rd.number(nm, np, "radius_laplacian", {1.5, 5.0, false, false}, n.radius_laplacian);
   rd.number(nm, np, "courant", {0.0, 1.0, true, false}, n.courant);
@@ -152,7 +159,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)
     n.pressure_source = s == 0 ? PressureSource::Standard : PressureSource::Mixed;
-  rd.number(nm, np, "source_relaxation", {0.0, 1.0, true, false}, n.source_relaxation);
+  rd.number(nm, np, "source_relaxation", {0.0, 1.0, false, false}, n.source_relaxation);
+  if (n.scheme == Scheme::Stabilised && n.pressure_source != PressureSource::Mixed)
+    rd.fail("numerics.scheme = \"stabilised\" needs numerics.pressure_source = \"mixed\" (its walls act through the "
+            "velocity-divergence source; docs/case-file.md)");
   if (int s = rd.choice(nm, np, "pressure_solver", {"iccg", "amg"}); s >= 0)
     n.pressure_solver = s == 0 ? PressureSolverKind::EigenIccg : PressureSolverKind::HypreAmg;
   rd.number(nm, np, "solver_tolerance", {0.0, 1e-2, true, false}, n.solver_tolerance);
@@ -206,6 +216,14 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
+  if (c.numerics.scheme == Scheme::Stabilised) {
+    const bool gas = std::any_of(c.regions.begin(), c.regions.end(),
+                                 [](const Region& r) { return r.material == Material::Gas; });
+    if (gas || !c.inflows.empty() || !c.outflows.empty())
+      rd.fail(std::string("numerics.scheme = \"stabilised\" is built and validated for water and walls only; this case "
+                          "has ") + (gas ? "gas regions" : "inflow or outflow boundaries") +
+              ": use numerics.scheme = \"paper\" (docs/validation.md)");
+  }
   detail::readTexture(rd, root, c);
   detail::readRender(rd, root, c);
   return c;

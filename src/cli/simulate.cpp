@@ -134,7 +134,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   }
   const double wall_start = omp_get_wtime();
   StepReport last;
-  std::int64_t gas_capped = 0;  // since the last output
+  DiagnosticsRow guards;  // the guard counters since the last output
 
   auto writeOutput = [&]() {
     const std::string name = frameName(state.next_frame);
@@ -149,7 +149,10 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
       if (texture) texture->frame<D>(frameNumber(state.next_frame), grid, state.particles, category, state.time);
     }
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
-    row.gas_capped = std::exchange(gas_capped, 0);
+    row.gas_capped = std::exchange(guards.gas_capped, 0);
+    row.collisions = std::exchange(guards.collisions, 0);
+    row.gradient_fallbacks = std::exchange(guards.gradient_fallbacks, 0);
+    row.thin_support = std::exchange(guards.thin_support, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -171,7 +174,10 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
       const double next_output = std::min(end_time, state.next_frame * interval);
       while (state.time < next_output - eps) {
         last = solver.step(next_output);
-        gas_capped += static_cast<std::int64_t>(last.gas_corrections_capped);
+        guards.gas_capped += static_cast<std::int64_t>(last.gas_corrections_capped);
+        guards.collisions += static_cast<std::int64_t>(last.collisions);
+        guards.gradient_fallbacks += static_cast<std::int64_t>(last.gradient_fallbacks);
+        guards.thin_support += static_cast<std::int64_t>(last.thin_support);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

@@ -81,6 +81,9 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::inflow_rate, 9>("inflow_rate"),
     column<&DiagnosticsRow::outflow_rate, 9>("outflow_rate"),
     column<&DiagnosticsRow::gas_capped>("gas_capped"),
+    column<&DiagnosticsRow::collisions>("collisions"),
+    column<&DiagnosticsRow::gradient_fallbacks>("gradient_fallbacks"),
+    column<&DiagnosticsRow::thin_support>("thin_support"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

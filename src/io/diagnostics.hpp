@@ -36,6 +36,9 @@ struct DiagnosticsRow {
   // Gas pressure corrections cut by numerics.gas_correction_limit or gas_speed_limit since the previous row
   // (particle-steps).
   std::int64_t gas_capped = 0;
+  // Numerical guards of the liquid since the previous row (solver.hpp StepReport): collision reversals, corrected
+  // gradients that fell back to the standard form, rows made free surface by numerics.liquid_support_fraction.
+  std::int64_t collisions = 0, gradient_fallbacks = 0, thin_support = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

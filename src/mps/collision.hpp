@@ -5,6 +5,7 @@
 // Evaluated Jacobi-style from the old velocities so the result does not depend on particle order or
 // thread count; the position is moved with the velocity change, r_i += dt du_i.
 // `affects(i, j)` says whether j may change i's velocity (the liquid ignores open gas, eqs. (5)-(8)).
+// Returns how many (i, j) reversals it made (a numerical guard: diagnostics.csv column `collisions`).
 #pragma once
 
 #include <vector>
@@ -14,13 +15,14 @@
 namespace mistfall {
 
 template <int D, class Affects>
-void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
+std::size_t resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                        const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
                        const NeighborList& nl, double distance, double restitution, double dt, Affects&& affects) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   const double d2 = distance * distance;
-#pragma omp parallel for schedule(static)
+  std::size_t reversals = 0;
+#pragma omp parallel for schedule(static) reduction(+ : reversals)
   for (std::int64_t i = 0; i < n; ++i) {
     if (kind[i] != ParticleKind::Fluid) continue;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
@@ -34,6 +36,7 @@ void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& veloc
       if (approach <= 0.0) continue;
       const double share = isFixed(kind[j]) ? 1.0 : mass[j] / (mass[i] + mass[j]);
       change[i] -= (1.0 + restitution) * share * approach * normal;
+      ++reversals;
     }
   }
 #pragma omp parallel for schedule(static)
@@ -41,14 +44,15 @@ void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& veloc
     velocity[i] += change[i];
     position[i] += dt * change[i];
   }
+  return reversals;
 }
 
 template <int D>
-void resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
+std::size_t resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                        const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
                        const NeighborList& nl, double distance, double restitution, double dt) {
-  resolveCollisions<D>(position, velocity, kind, mass, nl, distance, restitution, dt,
-                       [](std::int64_t, std::int32_t) { return true; });
+  return resolveCollisions<D>(position, velocity, kind, mass, nl, distance, restitution, dt,
+                              [](std::int64_t, std::int32_t) { return true; });
 }
 
 }  // namespace mistfall

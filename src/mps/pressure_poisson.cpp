@@ -107,6 +107,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
       const double divergence = divergenceAt<D>(i, p.position, p.velocity, nl, c, carriesVelocity);
       sys.rhs[r] = -rho / dt * divergence + source.relaxation * rho / (dt * dt) * compression;
     }
+    if (!problem.extra_rhs.empty()) sys.rhs[r] += problem.extra_rhs[i];
   }
 }
 

@@ -34,6 +34,7 @@ struct PressureProblem {
   std::vector<char> carries_velocity;  // neighbours of the divergence (mixed source only)
   std::vector<double> sound_speed;  // c_i [m/s], infinity = incompressible
   double density = 1.0;             // rho [kg/m^3] of the system's fluid
+  std::vector<double> extra_rhs;    // known terms added to row i's right-hand side (empty = none)
 };
 
 // Free-surface flags of the single-phase system: fluid or wall particles with n*_i < beta n0.

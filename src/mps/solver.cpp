@@ -16,6 +16,7 @@
 #include "mps/number_density.hpp"
 #include "mps/open_boundaries.hpp"
 #include "mps/time_step.hpp"
+#include "mps/wall_mirror.hpp"
 
 namespace mistfall {
 
@@ -86,7 +87,7 @@ const StepReport& MpsSolver<D>::step(double until) {
   computeLiquidNumberDensity();
   double tp = omp_get_wtime();
   solveLiquidPressure(dt);
-  extrapolateDummyPressure(state_.particles.pressure, phases_[static_cast<int>(Phase::Liquid)].density);
+  setLiquidWallPressure();
   report_.seconds_pressure = omp_get_wtime() - tp;
   correctLiquid(dt);
   if (roles_.enclosed_count > 0) moveBubbleGas(dt);
@@ -243,9 +244,28 @@ void MpsSolver<D>::collide(double dt) {
   // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
   const auto& open_gas = roles_.open_gas;
   auto affects = [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); };
-  resolveCollisions<D>(p.position, p.velocity, p.kind, mass, neighbours_,
+  report_.collisions = resolveCollisions<D>(p.position, p.velocity, p.kind, mass, neighbours_,
                        config_.numerics.collision_distance * constants_.l0, config_.numerics.collision_restitution, dt,
                        affects);
+}
+
+// The walls' and dummies' pressure in the liquid system: paper scheme, extrapolated from the nearest wall particle
+// (they take part in the next correction); stabilised scheme, the mirrored wall pressure averaged over the fluid
+// around each (wall_mirror.hpp; output and wall loads only: the correction mirrors the fluid's own pressure).
+template <int D>
+void MpsSolver<D>::setLiquidWallPressure() {
+  auto& p = state_.particles;
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+  if (config_.numerics.scheme == Scheme::Paper) {
+    extrapolateDummyPressure(p.pressure, rho);
+    return;
+  }
+  const auto& in_system = roles_.in_liquid_system;
+  auto liquid = [&](std::int32_t j) {
+    return in_system[j] && (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow);
+  };
+  averageMirroredWallPressure<D>(p.position, p.kind, p.pressure, neighbours_, constants_.re_number_density, rho,
+                                 gravity_, liquid);
 }
 
 template <int D>

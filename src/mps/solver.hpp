@@ -18,6 +18,7 @@
 
 #include "case/case_config.hpp"
 #include "mps/bubble_pressure.hpp"
+#include "mps/corrected_gradient.hpp"
 #include "mps/enclosed_gas.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/phase_coupling.hpp"
@@ -55,6 +56,10 @@ struct StepReport {
   std::int64_t removed = 0;        // particles removed by outflows in the step
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
+  // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
+  std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
+  std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
+  std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
 };
 
 template <int D>
@@ -85,8 +90,12 @@ class MpsSolver {
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
   void solveLiquidPressure(double dt);
+  void setLiquidWallPressure();
   void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
   void correctLiquid(double dt);
+  // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
+  void stabilisedPressureTerms(double dt);
+  CorrectedGradient<D> stabilisedGradient(std::size_t i) const;
   void solveGasPressure(double dt);
   void correctGas(double dt);
   void moveBubbleGas(double dt);
@@ -110,6 +119,7 @@ class MpsSolver {
   GasRegions regions_;
   CouplingRoles roles_;
   PressureProblem problem_;
+  std::vector<double> surface_pressure_;     // stabilised: Dirichlet values of free-surface particles (empty: 0)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
   PressureSystem system_;

@@ -1,6 +1,8 @@
 // The liquid's pressure system and correction, eqs. (5), (7), (9) (the step's stages `computeLiquidNumberDensity`,
 // `solveLiquidPressure`, `extrapolateDummyPressure`, `correctLiquid` of MpsSolver, solver.hpp): liquid and walls
 // carry unknowns, each bubble one merged unknown (bubble_pressure.hpp); open gas is invisible to the liquid.
+// numerics.scheme = "stabilised" changes the walls, the gradient and the known terms of the rows
+// (solver_liquid_stabilised.cpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,6 +11,7 @@
 #include "mps/gradient.hpp"
 #include "mps/number_density.hpp"
 #include "mps/solver.hpp"
+#include "mps/wall_mirror.hpp"
 
 namespace mistfall {
 
@@ -40,6 +43,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   problem_.carries_velocity = roles_.in_liquid_system;
   problem_.density = liquid.density;
   problem_.sound_speed.assign(n, liquid.sound_speed);
+  const bool stabilised = config_.numerics.scheme == Scheme::Stabilised;
+  problem_.extra_rhs.clear();
   // One group (merged unknown) per bubble, numbered in region order; its initial guess is the bubble's pressure
   // from the last step (its particles all hold it).
   std::vector<std::int32_t> group_of(n, -1), group_of_region(regions_.regionCount(), -1);
@@ -49,7 +54,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
                                   : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto k = p.kind[i];
-    problem_.takes_part[i] = roles_.in_liquid_system[i] && hasPressureUnknown(k);
+    problem_.takes_part[i] = roles_.in_liquid_system[i] && hasPressureUnknown(k) && !(stabilised && isMirroredWall(k));
     if (roles_.enclosed_gas[i]) {
       problem_.unknown[i] = 1;
       problem_.sound_speed[i] = std::numeric_limits<double>::infinity();
@@ -66,6 +71,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
                             hasFullNeighbourhood(i, roles_.in_liquid_system);
     }
   }
+  if (stabilised) stabilisedPressureTerms(dt);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
@@ -85,6 +91,9 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     const double value = x[lumped_.column_of_row[r]];
     p.pressure[i] = group_of[i] >= 0 ? value : std::max(0.0, value);
   }
+  if (!surface_pressure_.empty())
+    for (std::size_t i = 0; i < n; ++i)
+      if (surface_pressure_[i] != 0.0) p.pressure[i] = surface_pressure_[i];
 }
 
 // Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
@@ -125,9 +134,17 @@ void MpsSolver<D>::correctLiquid(double dt) {
     return in_system[j] && hasPressureUnknown(p.kind[j]);
   };
   auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
-#pragma omp parallel for schedule(static)
+  const bool stabilised = config_.numerics.scheme == Scheme::Stabilised;
+  std::size_t fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
+    if (stabilised) {
+      const auto gradient = stabilisedGradient(i);
+      fallbacks += gradient.fell_back;
+      change[i] = -dt / rho * gradient.value;
+      continue;
+    }
     change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
   }
@@ -137,6 +154,7 @@ void MpsSolver<D>::correctLiquid(double dt) {
     p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }
+  report_.gradient_fallbacks = fallbacks;
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                                   \

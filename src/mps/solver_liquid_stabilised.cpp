@@ -1,0 +1,89 @@
+// numerics.scheme = "stabilised": the parts of the liquid's pressure stage that differ from the paper's MPS
+// (docs/validation.md). Still water is an exact equilibrium of the discrete equations (hydrostatic pressure, zero
+// velocity, whatever the arrangement of the particles), which the paper's scheme is not:
+//  * mirrored walls (wall_mirror.hpp, after Adami, Hu & Adams 2012): walls carry no unknown; seen from a fluid
+//    particle they hold its pressure continued hydrostatically, and their velocity enters the divergence source;
+//  * the first-order consistent Laplacian (laplacian_consistency.hpp) and the free-surface particles' pressure half
+//    a spacing inside the surface (surface_pressure.hpp), both from the last step's corrected gradient;
+//  * the corrected gradient (corrected_gradient.hpp, Khayyer & Gotoh 2011) in the correction;
+//  * rows whose liquid-side support is below numerics.liquid_support_fraction of n0 are free surface (counted).
+#include "mps/laplacian_consistency.hpp"
+#include "mps/number_density.hpp"
+#include "mps/solver.hpp"
+#include "mps/surface_pressure.hpp"
+#include "mps/wall_mirror.hpp"
+
+namespace mistfall {
+
+// The corrected gradient of the liquid's pressure at particle i (mirrored walls hold p_i + rho g . r_ib).
+template <int D>
+CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i) const {
+  const auto& p = state_.particles;
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+  const auto& in_system = roles_.in_liquid_system;
+  auto carries = [&](std::int32_t j) { return in_system[j] != 0; };
+  auto difference = [&](std::int32_t j, const Vec<D>& rij) {
+    return isMirroredWall(p.kind[j]) ? rho * gravity_.dot(rij) : p.pressure[j] - p.pressure[i];
+  };
+  return correctedGradientAt<D>(i, p.position, neighbours_, constants_,
+                                config_.numerics.gradient_correction_min_determinant, carries, difference);
+}
+
+// After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every
+// row (problem_.extra_rhs) and the Dirichlet values of the free-surface particles (surface_pressure_), from the
+// last step's pressure p^n at r*.
+template <int D>
+void MpsSolver<D>::stabilisedPressureTerms(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+  const auto& in_system = roles_.in_liquid_system;
+  // Rows with too little liquid around them would be set by the mirrored walls alone: free surface.
+  const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
+  auto liquidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
+  std::size_t thin = 0;
+#pragma omp parallel for schedule(static) reduction(+ : thin)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.unknown[i] || roles_.enclosed_gas[i] || p.kind[i] != ParticleKind::Fluid) continue;
+    if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, liquidSide) < support) {
+      problem_.unknown[i] = 0;
+      ++thin;
+    }
+  }
+  report_.thin_support = thin;
+  // Walls do not carry velocity in the divergence: mirroredWallTerm adds theirs against u* - g dt.
+  for (std::int64_t i = 0; i < n; ++i)
+    if (isMirroredWall(p.kind[i])) problem_.carries_velocity[i] = 0;
+  std::vector<Vec<D>> last_gradient(n, Vec<D>::Zero());
+  surface_pressure_.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.takes_part[i] || roles_.enclosed_gas[i]) continue;
+    last_gradient[i] = stabilisedGradient(i).value;
+    if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid)
+      surface_pressure_[i] = surfaceParticlePressure<D>(last_gradient[i], constants_.l0);
+  }
+  problem_.extra_rhs.assign(n, 0.0);
+  const double factor = constants_.laplacianFactor();
+  auto inLaplacian = [&](std::int32_t j) { return problem_.takes_part[j] || isMirroredWall(p.kind[j]); };
+  auto atSurface = [&](std::int32_t j) { return surface_pressure_[j] != 0.0; };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.unknown[i] || roles_.enclosed_gas[i]) continue;
+    double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, rho, gravity_, dt);
+    extra += laplacianConsistencyTerm<D>(i, p.position, neighbours_, constants_, last_gradient[i], inLaplacian);
+    double surface = 0.0;
+    forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, atSurface,
+                         [&](std::int32_t j, const Vec<D>&, double, double w) { surface += w * surface_pressure_[j]; });
+    problem_.extra_rhs[i] = extra + factor * surface;
+  }
+}
+
+#define MISTFALL_INSTANTIATE(D)                                                         \
+  template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t) const; \
+  template void MpsSolver<D>::stabilisedPressureTerms(double);
+MISTFALL_INSTANTIATE(2)
+MISTFALL_INSTANTIATE(3)
+#undef MISTFALL_INSTANTIATE
+
+}  // namespace mistfall
