@@ -24,10 +24,6 @@ namespace mistfall {
 
 namespace {
 
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 struct Frame {
   fs::path vtp;
   std::string number;  // NNNNN
