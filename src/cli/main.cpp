@@ -10,6 +10,7 @@
 #include "cli/run_command.hpp"
 #include "cli/simulate.hpp"
 #include "cli/texture_command.hpp"
+#include "io/data_files.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"mistfall — physically based waterfall animation from a gas-liquid two-phase MPS simulation"};
@@ -111,7 +112,9 @@ int main(int argc, char** argv) {
   run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
   run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
   run->footer(std::string("Stops at the first stage that fails, with its exit code.\n") + mistfall::kExitCodeContract);
+  const auto data = mistfall::dataDirectory();
   app.footer(std::string("One command at a time works on a run directory (a lock in RUN_DIR/.mistfall.lock).\n") +
+             (data ? "Data files (example cases, render includes): " + data->string() + "\n" : std::string()) +
              mistfall::kExitCodeContract);
 
   // Command-line errors are bad input, like every other input error (CLI11 would use 100+).
