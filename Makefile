@@ -4,7 +4,9 @@ JOBS ?= $(shell nproc)
 CASE ?= cases/dam_break.toml
 OUT ?= out/demo
 
-.PHONY: deps build test demo demo-render bench validate clean
+PREFIX ?= /usr/local
+
+.PHONY: deps build test install demo demo-render bench validate clean
 
 deps:
 	@scripts/install-deps.sh
@@ -17,6 +19,10 @@ test: build
 	@# Tests run in parallel (ctest -j): one OpenMP thread each unless a test sets its own, and passive waiting,
 	@# so threads never spin against each other on a small machine.
 	@cd $(BUILD_DIR) && OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive ctest --output-on-failure -j $(JOBS)
+
+# PREFIX/bin/mistfall, PREFIX/share/mistfall/{render,cases}, PREFIX/share/doc/mistfall (make install PREFIX=~/.local).
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 # The whole pipeline on the waterfall (mistfall run: simulate with inline classification, texture, render) to
 # t = 0.8 s: its air is right up to about 0.9 s (docs/waterfall.md). About 8 minutes on 2 cores, 0.6 GB.

@@ -215,15 +215,28 @@ TEST(ClassifyCommand, BadInputExitsOneNamingThePathAndWritesNothing) {
   EXPECT_NE(r.err.find("run_dir is required"), std::string::npos) << r.err;
 }
 
-// A frame that cannot be read: exit 2 naming it, no categories.csv.
-TEST(ClassifyCommand, UnreadableFrameExitsTwoNamingIt) {
+// A malformed frame is bad input: exit 1 naming it, every frame read before the first is rewritten, so no frame
+// changes and there is no categories.csv.
+TEST(ClassifyCommand, MalformedFrameExitsOneNamingItAndWritesNothing) {
   const fs::path run = simulateTinyRun(freshDir("classify_broken"));
   const fs::path broken = framesOf(run).back();
   std::ofstream(broken, std::ios::binary | std::ios::trunc) << "<?xml version=\"1.0\"?>\n<VTKFile";
+  const std::string first = slurp(framesOf(run).front());
+  const CliResult r = runCli("classify " + quoted(run) + " --plain-progress");
+  EXPECT_EQ(1, r.code);
+  EXPECT_NE(r.err.find(broken.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "categories.csv"));
+  EXPECT_EQ(first, slurp(framesOf(run).front()));
+}
+
+// A write the system refuses is an I/O failure: exit 2 naming the file (categories.csv is a folder here).
+TEST(ClassifyCommand, RefusedWriteExitsTwoNamingTheFile) {
+  const fs::path run = simulateTinyRun(freshDir("classify_refused"));
+  fs::create_directories(run / "categories.csv" / "x");
   const CliResult r = runCli("classify " + quoted(run) + " --plain-progress");
   EXPECT_EQ(2, r.code);
-  EXPECT_NE(r.err.find(broken.string()), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(run / "categories.csv"));
+  EXPECT_NE(r.err.find((run / "categories.csv").string()), std::string::npos) << r.err;
 }
 
 TEST(ClassifyCaseFile, DefaultsAndKeys) {

@@ -311,7 +311,7 @@ TEST(Checkpoint, Errors) {
   writeCheckpoint<3>(good, sampleState<3>());
   const std::string bytes = slurp(good);
 
-  EXPECT_NE(std::string::npos, errorOf([&] { readCheckpoint<2>(dir / "missing.ckpt"); }).find("not found"));
+  EXPECT_NE(std::string::npos, errorOf([&] { readCheckpoint<2>(dir / "missing.ckpt"); }).find("does not exist"));
 
   EXPECT_NE(std::string::npos, errorOf([&] { readCheckpoint<2>(good); }).find("checkpoint is 3D, case is 2D"));
 

@@ -105,9 +105,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.checkKeys(cs, "case", {"name", "dimension"});
   {
     Field f = rd.field(cs, "case", "name");
-    if (!f.node) rd.missing(f, "a non-empty string");
-    c.name = rd.string(f, "a non-empty string");
-    if (c.name.empty()) rd.fail(f.path + " = \"\" is empty; allowed a non-empty string");
+    if (!f.node) rd.missing(f, detail::kFileNameAllowed);
+    c.name = rd.string(f, detail::kFileNameAllowed);
+    if (const std::string why = detail::fileNameProblem(c.name); !why.empty())  // it names render/<name>.mp4
+      rd.fail(f.path + " = " + show(*f.node) + " " + why + "; allowed " + detail::kFileNameAllowed);
   }
   rd.integer(cs, "case", "dimension", 2, 3, "2 or 3", c.dimension, true);
   const int dim = c.dimension;

@@ -1,7 +1,8 @@
 // Reading a case file: TOML text -> validated CaseConfig. Every problem is reported as a CaseError whose
 // message names the file, the full key path, the offending value and what is allowed.
 // The layout and every key are documented in docs/case-file.md. Parsing never touches the file system
-// except for reading the one file passed to loadCaseFile.
+// except for reading the one file passed to loadCaseFile and the memory available (case_size.hpp: a case that
+// cannot fit is a ResourceError, before the region checks, whose cost grows with the particle count).
 #pragma once
 
 #include <filesystem>
@@ -10,11 +11,12 @@
 #include <string_view>
 
 #include "case/case_config.hpp"
+#include "io/errors.hpp"
 
 namespace mistfall {
 
-struct CaseError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct CaseError : InputError {  // bad input: exit code 1
+  using InputError::InputError;
 };
 
 // Parses and validates a case from TOML text; `source_name` prefixes every error message.
@@ -28,6 +30,10 @@ namespace detail {
 // water or gas region keeping a point after overlaps are resolved, a water region exists); implemented in
 // case_regions.cpp. Throws CaseError prefixed with `source_name`.
 void validateRegions(const CaseConfig& c, const std::string& source_name);
+// Why `name` (a case-file value that becomes a file name) is not usable as one ("contains a path separator"), or ""
+// when it is; kFileNameAllowed says what is allowed. Implemented in case_names.cpp.
+std::string fileNameProblem(const std::string& name);
+extern const char* const kFileNameAllowed;
 // Shortest round-trip text of a number for messages: fixed notation for 1e-4 <= |v| < 1e6, else "1e-8".
 std::string formatNumber(double v);
 }  // namespace detail

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "case/case_size.hpp"
 #include "case/scene.hpp"
 
 namespace mistfall::detail {
@@ -138,6 +139,8 @@ void validateRegions(const CaseConfig& c, const std::string& source) {
   const std::function<void(const std::string&)> fail = [&](const std::string& msg) {
     throw CaseError(source + ": " + msg);
   };
+  // First, whether the case fits in memory at all: the checks below visit every lattice point.
+  checkCaseFitsInMemory(c, source);
   const int dim = c.dimension;
   const double l0 = c.numerics.particle_spacing;
   const double tol = 1e-9 * l0;

@@ -9,8 +9,11 @@
 #include <vector>
 
 #include "case/case_file.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_lock.hpp"
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 #include "io/text_format.hpp"
 #include "io/vtk_writer.hpp"
 #include "mps/reference_density.hpp"
@@ -66,6 +69,7 @@ std::string countsLine(const std::array<std::size_t, kCategoryCount>& counts) {
 
 template <int D>
 int classifyRun(const CaseConfig& config, const ClassifyOptions& options, const std::vector<fs::path>& frames) {
+  for (const fs::path& f : frames) readVtp<D>(f);  // every frame readable before the first is rewritten
   std::vector<FrameCounts> rows;
   ProgressReporter progress(static_cast<double>(frames.size()), 0.0, std::cerr, options.force_plain_progress);
   progress.countIn("frames");
@@ -98,31 +102,28 @@ std::vector<Category> classifyFrame(const Particles<D>& particles, const CaseCon
   return classifyParticles<D>(particles, c, config.classify);
 }
 
-int runClassify(const ClassifyOptions& options) {
+namespace {
+
+int classify(const ClassifyOptions& options) {
   const fs::path& dir = options.run_dir;
-  CaseConfig config;
+  if (!fs::exists(dir)) throw InputError("run directory " + dir.string() + " does not exist");
+  if (!fs::is_directory(dir)) throw InputError("run directory " + dir.string() + " is not a directory");
+  if (!fs::exists(dir / "case.toml"))
+    throw InputError((dir / "case.toml").string() + " does not exist (is " + dir.string() +
+                     " a run directory written by `mistfall simulate`?)");
+  const RunDirLock lock(dir, "classify");
+  const CaseConfig config = loadCaseFile(dir / "case.toml");
   std::vector<fs::path> frames;
-  try {
-    if (!fs::exists(dir)) throw CaseError("run directory " + dir.string() + " does not exist");
-    if (!fs::is_directory(dir)) throw CaseError("run directory " + dir.string() + " is not a directory");
-    if (!fs::exists(dir / "case.toml"))
-      throw CaseError((dir / "case.toml").string() + " does not exist (is " + dir.string() +
-                      " a run directory written by `mistfall simulate`?)");
-    config = loadCaseFile(dir / "case.toml");
-    if (fs::is_directory(dir / "frames")) frames = listFrames(dir / "frames");
-    if (frames.empty())
-      throw CaseError("no frames (frame_NNNNN.vtp) in " + (dir / "frames").string());
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall classify: " << e.what() << "\n";
-    return 1;
-  }
+  if (fs::is_directory(dir / "frames")) frames = listFrames(dir / "frames");
+  if (frames.empty()) throw InputError("no frames (frame_NNNNN.vtp) in " + (dir / "frames").string());
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  try {
-    return config.dimension == 2 ? classifyRun<2>(config, options, frames) : classifyRun<3>(config, options, frames);
-  } catch (const std::exception& e) {
-    std::cerr << "\nmistfall classify: " << e.what() << "\n";
-    return 2;
-  }
+  return config.dimension == 2 ? classifyRun<2>(config, options, frames) : classifyRun<3>(config, options, frames);
+}
+
+}  // namespace
+
+int runClassify(const ClassifyOptions& options) {
+  return runReportingErrors("mistfall classify", [&] { return classify(options); });
 }
 
 template std::vector<Category> classifyFrame<2>(const Particles<2>&, const CaseConfig&);

@@ -21,8 +21,9 @@ struct ClassifyOptions {
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
 };
 
-// Exit codes: 0 done; 1 bad input (no such run directory, no case.toml or a bad one, no frames; nothing written);
-// 2 a frame cannot be read or written (frames already done keep their category array; no categories.csv).
+// Exit codes: cli/exit_codes.hpp. 1 bad input (no such run directory, no case.toml or a bad one, no frames, a
+// malformed frame: every frame is read before the first is rewritten, so nothing is written); 2 a write the system
+// refused (frames already done keep their category array; no categories.csv).
 int runClassify(const ClassifyOptions& options);
 
 // The classification of one frame of a case: constants and thresholds from `config` ([numerics], [classify]).

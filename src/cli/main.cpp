@@ -5,10 +5,12 @@
 #include <iostream>
 
 #include "cli/classify.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/render_command.hpp"
 #include "cli/run_command.hpp"
 #include "cli/simulate.hpp"
 #include "cli/texture_command.hpp"
+#include "io/data_files.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"mistfall — physically based waterfall animation from a gas-liquid two-phase MPS simulation"};
@@ -33,7 +35,11 @@ int main(int argc, char** argv) {
       "writes its flow grid fields/fields_NNNNN.vti, and with `inline = true` in the case's [texture] table the\n"
       "texture stage runs inline: RUN_DIR/texture/ (the files of `mistfall texture RUN_DIR`, byte for byte the\n"
       "same) at every frame; --resume rebuilds the cloud from the saved frames first. docs/texture.md.\n"
-      "Exit codes: 0 done, 1 bad input (nothing written), 2 I/O failure, 3 the run diverged.");
+      "--resume refuses a checkpoint written for another case: a change of case.toml that changes the simulation\n"
+      "(dimension, domain, physics, numerics, output.interval and field_spacing, regions, inflows, outflows);\n"
+      "output.end_time, [classify], [texture], [render] and names may change. A case that cannot fit in the\n"
+      "memory available is refused before anything is written.\n" +
+      std::string(mistfall::kExitCodeContract));
 
   mistfall::ClassifyOptions cls;
   auto* classify = app.add_subcommand(
@@ -47,7 +53,8 @@ int main(int argc, char** argv) {
       "(atomically, same format, the arrays simulate writes kept bit for bit); RUN_DIR/categories.csv gets one\n"
       "row per frame (frame, time, the six counts). Running it again gives the same files. Frames written by\n"
       "`simulate` already carry the array; run classify after changing [classify] in RUN_DIR/case.toml.\n"
-      "Exit codes: 0 done, 1 bad input (nothing written), 2 a frame could not be read or written.");
+      "Every frame is read before the first is rewritten.\n" +
+      std::string(mistfall::kExitCodeContract));
   classify->add_option("run_dir", cls.run_dir, "Run directory written by `mistfall simulate` (holds case.toml and frames/)")
       ->required();
   classify->add_option("--threads,-j", cls.threads, "OpenMP threads (default: all cores); results do not depend on N")
@@ -68,6 +75,8 @@ int main(int argc, char** argv) {
   texture->add_flag("--ascii", tex.ascii, "Write ASCII VTK files instead of binary");
   texture->add_flag("--overwrite", tex.overwrite, "Replace an existing RUN_DIR/texture");
   texture->add_flag("--plain-progress", tex.force_plain_progress, "Log progress lines instead of a progress bar");
+  texture->footer(std::string("Every frame and flow grid is read before anything is written.\n") +
+                  mistfall::kExitCodeContract);
 
   mistfall::RenderOptions ren;
   auto* render = app.add_subcommand(
@@ -77,9 +86,9 @@ int main(int argc, char** argv) {
       "Reads RUN_DIR/case.toml ([render]: camera, light, image sizes; docs/case-file.md), the frames, their\n"
       "category array (droplets, bubbles) and RUN_DIR/texture/texture_NNNNN.bin (mist, micro-bubbles) when present.\n"
       "Writes RUN_DIR/render/: materials.inc (once; edit it to restyle), mesh_NNNNN.inc/.ply, scene_NNNNN.pov,\n"
-      "png/frame_NNNNN.png (preview/ with --preview), log/ and the animation. Frames whose image exists are\n"
-      "skipped. Needs the Debian packages povray and ffmpeg.\n"
-      "Exit codes: 0 done, 1 bad input or povray/ffmpeg missing (nothing written), 2 a write or povray/ffmpeg failed.");
+      "png/frame_NNNNN.png (preview/ with --preview), log/ and the animation. Frames whose image is newer than\n"
+      "the frame, its texture file and case.toml are skipped. Needs the Debian packages povray and ffmpeg.\n" +
+      std::string(mistfall::kExitCodeContract));
   render->add_option("run_dir", ren.run_dir, "Run directory written by `mistfall simulate`")->required();
   render->add_flag("--preview", ren.preview, "Small images (render.preview_width x preview_height), no antialiasing");
   render->add_option("--jobs,-j", ren.jobs, "povray processes at once (default: the number of cores)")
@@ -102,25 +111,30 @@ int main(int argc, char** argv) {
   run->add_flag("--preview", pipe.preview, "Render small preview images (see `render --help`)");
   run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
   run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
+  run->footer(std::string("Stops at the first stage that fails, with its exit code.\n") + mistfall::kExitCodeContract);
+  const auto data = mistfall::dataDirectory();
+  app.footer(std::string("One command at a time works on a run directory (a lock in RUN_DIR/.mistfall.lock).\n") +
+             (data ? "Data files (example cases, render includes): " + data->string() + "\n" : std::string()) +
+             mistfall::kExitCodeContract);
 
-  // Command-line errors are bad input: exit code 1 like every other input error (CLI11 would use 100+).
+  // Command-line errors are bad input, like every other input error (CLI11 would use 100+).
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 1;
+    return app.exit(e) == 0 ? mistfall::kExitDone : mistfall::kExitBadInput;
   }
 
   if (simulate->parsed()) {
     if (!resume_dir.empty()) {
       if (!sim.case_file.empty()) {
         std::cerr << "mistfall: give either a case file or --resume DIR, not both (a run directory holds its case)\n";
-        return 1;
+        return mistfall::kExitBadInput;
       }
       sim.resume = true;
       sim.out_dir = resume_dir;
     } else if (sim.case_file.empty() || sim.out_dir.empty()) {
       std::cerr << "mistfall simulate: need CASE.toml and --out DIR (or --resume DIR); see --help\n";
-      return 1;
+      return mistfall::kExitBadInput;
     }
     return mistfall::runSimulate(sim);
   }

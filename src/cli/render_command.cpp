@@ -10,7 +10,10 @@
 #include <thread>
 
 #include "case/case_file.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_lock.hpp"
+#include "io/errors.hpp"
 #include "io/texture_files.hpp"
 #include "io/vtk_writer.hpp"
 #include "render/external_tools.hpp"
@@ -23,10 +26,6 @@ namespace fs = std::filesystem;
 namespace mistfall {
 
 namespace {
-
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct Frame {
   fs::path vtp;
@@ -107,15 +106,54 @@ void joinImages(const CaseConfig& c, const Layout& out) {
   }
 }
 
+fs::path textureFile(const fs::path& run, const Frame& f) {
+  return run / "texture" / ("texture_" + f.number + ".bin");
+}
+
+// The frames to render: those without an image, or whose image is older than the frame, its texture file or
+// case.toml (a run classified, textured or re-cased since). Every one is read first (frame and texture file), so
+// that a malformed input is reported before anything is written; frames without a texture file while the run has
+// one are reported too.
 template <int D>
-int render(const CaseConfig& c, const RenderOptions& o, const std::vector<Frame>& frames, const Layout& out) {
+std::vector<const Frame*> framesToRender(const fs::path& run, const std::vector<Frame>& frames, const Layout& out) {
+  std::error_code ec;
+  const auto case_time = fs::last_write_time(run / "case.toml", ec);
+  const bool textured = fs::exists(run / "texture" / "texture.pvd");
   std::vector<const Frame*> todo;
-  for (const Frame& f : frames)
-    if (!fs::exists(out.images / ("frame_" + f.number + ".png"))) todo.push_back(&f);
+  std::size_t stale = 0;
+  std::vector<std::string> no_texture;
+  for (const Frame& f : frames) {
+    const fs::path image = out.images / ("frame_" + f.number + ".png");
+    const fs::path tex = textureFile(run, f);
+    const bool has_texture = fs::exists(tex);
+    if (textured && !has_texture) no_texture.push_back(f.number);
+    if (fs::exists(image)) {
+      const auto made = fs::last_write_time(image, ec);
+      const bool newer = !ec && made >= fs::last_write_time(f.vtp) && made >= case_time &&
+                         (!has_texture || made >= fs::last_write_time(tex));
+      if (newer) continue;
+      ++stale;
+    }
+    readVtp<D>(f.vtp);
+    if (has_texture) readTextureBinary(tex);
+    todo.push_back(&f);
+  }
   const std::size_t skipped = frames.size() - todo.size();
   if (skipped > 0)
     std::cerr << "mistfall render: " << skipped << " of " << frames.size() << " frames already rendered in "
-              << out.images << "\n";
+              << out.images << " (their images are newer than the frame, its texture and case.toml)\n";
+  if (stale > 0)
+    std::cerr << "mistfall render: " << stale << " images older than their frame, texture or case.toml are "
+              << "rendered again\n";
+  if (!no_texture.empty())
+    std::cerr << "mistfall render: note: " << (run / "texture") << " has no texture file for " << no_texture.size()
+              << " of " << frames.size() << " frames (the first: " << no_texture.front() << ", the last: "
+              << no_texture.back() << "): they are rendered without mist and micro-bubbles\n";
+  return todo;
+}
+
+template <int D>
+int render(const CaseConfig& c, const RenderOptions& o, const std::vector<const Frame*>& todo, const Layout& out) {
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   ProgressReporter progress(static_cast<double>(todo.size()), 0.0, std::cerr, o.force_plain_progress);
   progress.countIn("frames");
@@ -167,39 +205,50 @@ int render(const CaseConfig& c, const RenderOptions& o, const std::vector<Frame>
 
 }  // namespace
 
-int runRender(const RenderOptions& o) {
-  CaseConfig config;
-  std::vector<Frame> frames;
-  try {
-    if (!fs::is_directory(o.run_dir)) throw InputError("run directory " + o.run_dir.string() + " does not exist");
-    if (!fs::exists(o.run_dir / "case.toml"))
-      throw InputError((o.run_dir / "case.toml").string() + " does not exist (is " + o.run_dir.string() +
-                       " a run directory written by `mistfall simulate`?)");
-    config = loadCaseFile(o.run_dir / "case.toml");
-    frames = listFrames(o.run_dir / "frames");
-    if (frames.empty()) throw InputError("no frames (frame_NNNNN.vtp) in " + (o.run_dir / "frames").string());
-    if (const std::string missing = missingToolsMessage({kPovray, kFfmpeg}); !missing.empty())
-      throw InputError(missing.substr(0, missing.size() - 1));
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall render: " << e.what() << "\n";
-    return 1;
-  }
+namespace {
+
+int renderRun(const RenderOptions& o) {
+  if (!fs::is_directory(o.run_dir)) throw InputError("run directory " + o.run_dir.string() + " does not exist");
+  if (!fs::exists(o.run_dir / "case.toml"))
+    throw InputError((o.run_dir / "case.toml").string() + " does not exist (is " + o.run_dir.string() +
+                     " a run directory written by `mistfall simulate`?)");
+  const RunDirLock lock(o.run_dir, "render");
+  const CaseConfig config = loadCaseFile(o.run_dir / "case.toml");
+  const std::vector<Frame> frames = listFrames(o.run_dir / "frames");
+  if (frames.empty()) throw InputError("no frames (frame_NNNNN.vtp) in " + (o.run_dir / "frames").string());
+  if (const std::string missing = missingToolsMessage({kPovray, kFfmpeg}); !missing.empty())
+    throw InputError(missing.substr(0, missing.size() - 1));
   Layout out;
   out.render = o.run_dir / "render";
   out.images = o.preview ? out.render / "preview" : out.render / "png";
   out.logs = out.render / "log";
   out.video_stem = (o.preview ? out.images : out.render) / config.name;
-  try {
-    fs::create_directories(out.images);
-    fs::create_directories(out.logs);
-    for (const auto& e : fs::directory_iterator(out.images))  // an interrupted render's partial images
-      if (e.path().filename().string().rfind("tmp_frame_", 0) == 0) fs::remove(e.path());
-    installMaterials(out.render);
-    return config.dimension == 2 ? render<2>(config, o, frames, out) : render<3>(config, o, frames, out);
-  } catch (const std::exception& e) {
-    std::cerr << "\nmistfall render: " << e.what() << "\n";
-    return 2;
+  const std::vector<const Frame*> todo = config.dimension == 2 ? framesToRender<2>(o.run_dir, frames, out)
+                                                               : framesToRender<3>(o.run_dir, frames, out);
+  fs::create_directories(out.images);
+  fs::create_directories(out.logs);
+  std::vector<std::string> orphans;  // images of frames the run no longer has would join the animation
+  for (const auto& e : fs::directory_iterator(out.images)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("tmp_frame_", 0) == 0) fs::remove(e.path());  // an interrupted render's partial images
+    static const std::regex image(R"(frame_([0-9]{5,})\.png)");
+    std::smatch m;
+    if (std::regex_match(name, m, image) &&
+        std::none_of(frames.begin(), frames.end(), [&](const Frame& f) { return f.number == m[1].str(); }))
+      orphans.push_back(name);
   }
+  for (const auto& name : orphans) fs::remove(out.images / name);
+  if (!orphans.empty())
+    std::cerr << "mistfall render: removed " << orphans.size() << " images of frames the run does not have (the "
+              << "first: " << orphans.front() << ")\n";
+  installMaterials(out.render);
+  return config.dimension == 2 ? render<2>(config, o, todo, out) : render<3>(config, o, todo, out);
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& o) {
+  return runReportingErrors("mistfall render", [&] { return renderRun(o); });
 }
 
 }  // namespace mistfall

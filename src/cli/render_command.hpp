@@ -19,8 +19,9 @@ struct RenderOptions {
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
 };
 
-// Exit codes: 0 done; 1 bad input or povray/ffmpeg missing (the message names the Debian package; nothing
-// written); 2 a file could not be written or povray/ffmpeg failed (the message names the log file).
+// Exit codes: cli/exit_codes.hpp. 1 bad input or povray/ffmpeg missing (the message names the Debian package;
+// nothing written: the frames to render and their texture files are read first); 2 a file could not be written or
+// povray/ffmpeg failed (the message names the log file).
 int runRender(const RenderOptions& options);
 
 }  // namespace mistfall

@@ -4,25 +4,23 @@
 #include <iostream>
 
 #include "case/case_file.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/render_command.hpp"
+#include "cli/run_lock.hpp"
 #include "cli/simulate.hpp"
 #include "cli/texture_command.hpp"
+#include "io/errors.hpp"
 #include "render/external_tools.hpp"
 
 namespace mistfall {
 
-int runPipeline(const RunOptions& o) {
-  CaseConfig config;
-  try {
-    config = loadCaseFile(o.case_file);
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall run: " << e.what() << "\n";
-    return 1;
-  }
-  if (const std::string missing = missingToolsMessage({kPovray, kFfmpeg}); !missing.empty()) {
-    std::cerr << "mistfall run: " << missing;
-    return 1;
-  }
+namespace {
+
+int pipeline(const RunOptions& o) {
+  const CaseConfig config = loadCaseFile(o.case_file);
+  if (const std::string missing = missingToolsMessage({kPovray, kFfmpeg}); !missing.empty())
+    throw InputError(missing.substr(0, missing.size() - 1));
+  const KeepRunDirLocks keep;  // the run directory stays locked from simulate to render
   SimulateOptions sim;
   sim.case_file = o.case_file;
   sim.out_dir = o.out_dir;
@@ -50,6 +48,12 @@ int runPipeline(const RunOptions& o) {
   ren.jobs = o.jobs;
   ren.force_plain_progress = o.force_plain_progress;
   return runRender(ren);
+}
+
+}  // namespace
+
+int runPipeline(const RunOptions& o) {
+  return runReportingErrors("mistfall run", [&] { return pipeline(o); });
 }
 
 }  // namespace mistfall

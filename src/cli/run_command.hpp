@@ -18,8 +18,9 @@ struct RunOptions {
   bool force_plain_progress = false;
 };
 
-// Exit codes: those of the failing stage (0 when all are done). povray and ffmpeg are checked before simulating:
-// missing ones are exit code 1 with nothing written.
+// Exit codes: those of the failing stage (0 when all are done; cli/exit_codes.hpp). povray and ffmpeg are checked
+// before simulating: missing ones are exit code 1 with nothing written. The run directory stays locked from
+// simulate to render.
 int runPipeline(const RunOptions& options);
 
 }  // namespace mistfall

@@ -10,13 +10,19 @@
 
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
+#include "case/case_fingerprint.hpp"
 #include "cli/classify.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/progress.hpp"
+#include "cli/resume_check.hpp"
+#include "cli/run_directory.hpp"
+#include "cli/run_lock.hpp"
 #include "cli/texture_frames.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bubble_log.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
+#include "io/errors.hpp"
 #include "io/grid_fields.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_writer.hpp"
@@ -62,8 +68,10 @@ ImageData flowFields(const SimulationState<D>& s, const CaseConfig& config, MpsS
 
 std::string readText(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
+  if (!in) throwCannotOpen(file, "case file");
   std::ostringstream s;
   s << in.rdbuf();
+  if (in.bad()) throw std::runtime_error("error while reading " + file.string());
   return s.str();
 }
 
@@ -98,13 +106,19 @@ DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& conf
 }
 
 template <int D>
-int run(const CaseConfig& config, const SimulateOptions& options) {
+int run(const CaseConfig& config, const SimulateOptions& options, const std::string& fingerprint) {
   const fs::path dir = options.out_dir;
   SimulationState<D> state;
   double wall_offset = 0.0;
   std::optional<DiagnosticsRow> previous;  // the last row written (open-boundary rates are since it)
   if (options.resume) {
-    state = readCheckpoint<D>(dir / kCheckpoint);
+    std::string stored;
+    state = readCheckpoint<D>(dir / kCheckpoint, &stored);
+    for (const std::string& note : checkResume<D>(dir, state, stored, fingerprint))
+      std::cerr << "mistfall simulate: note: " << note << "\n";
+    if (!config.texture.run_inline && fs::exists(dir / kTexture))
+      std::cerr << "mistfall simulate: note: " << (dir / kTexture) << " is not extended (texture.inline = false): "
+                << "run `mistfall texture " << dir.string() << " --overwrite` when the run is done\n";
     for (const auto& row : DiagnosticsWriter::read(dir / kDiagnostics))
       if (row.time <= state.time + 1e-12) wall_offset = row.wall_seconds, previous = row;
   } else {
@@ -161,7 +175,7 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
     previous = row;
     bubble_log.append(state.time, bubbles);
     state.next_frame += 1;
-    writeCheckpoint<D>(dir / kCheckpoint, state);
+    writeCheckpoint<D>(dir / kCheckpoint, state, fingerprint);
   };
 
   if (!options.resume) writeOutput();  // frame 0: the initial state
@@ -189,10 +203,9 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
       out << std::setprecision(17) << "time = " << e.time() << "\nstep = " << e.step() << "\nreason = " << e.what()
           << "\n";
     });
-    std::cerr << "mistfall: the run diverged at t = " << e.time() << " s, step " << e.step() << ": " << e.what()
-              << "\nmistfall: frames up to t = " << (state.next_frame - 1) * interval << " s are kept in " << dir
-              << "\n";
-    return 3;
+    std::cerr << "mistfall simulate: frames up to t = " << (state.next_frame - 1) * interval << " s are kept in "
+              << dir << "; " << (dir / kDiverged) << " records the divergence\n";
+    throw;  // exit code 3 (exit_codes.cpp)
   }
   progress.finish();
   std::cerr << "mistfall: done, t = " << state.time << " s in " << state.step << " steps, "
@@ -205,61 +218,62 @@ int run(const CaseConfig& config, const SimulateOptions& options) {
   return 0;
 }
 
+// Everything before the run: the case (validated, its size against the memory), the run directory (free, empty
+// or --overwrite), then, for a new run, the directory taken over and the case copied into it.
+int simulate(const SimulateOptions& options) {
+  const fs::path& dir = options.out_dir;
+  if (options.until && !(*options.until > 0.0)) throw InputError("--until must be a positive time in seconds");
+  CaseConfig config;
+  std::string case_text;
+  std::optional<RunDirLock> lock;
+  if (options.resume) {
+    if (!fs::is_directory(dir)) throw InputError("cannot resume: run directory " + dir.string() + " does not exist");
+    if (!fs::exists(dir / kCheckpoint))
+      throw InputError("cannot resume: " + (dir / kCheckpoint).string() + " does not exist");
+    lock.emplace(dir, "simulate");
+    config = loadCaseFile(dir / kCaseCopy);
+    case_text = readText(dir / kCaseCopy);
+    const int dim = checkpointDimension(dir / kCheckpoint);
+    if (dim != config.dimension)
+      throw InputError("cannot resume: checkpoint is " + std::to_string(dim) + "D but the case is " +
+                       std::to_string(config.dimension) + "D");
+  } else {
+    config = loadCaseFile(options.case_file);
+    if (dir.empty()) throw InputError("no output directory given (--out DIR)");
+    checkOutputPath(dir);
+    if (fs::exists(dir)) RunDirLock::checkFree(dir);
+    auto checkEmpty = [&] {
+      if (!options.overwrite && !isEmptyRunDirectory(dir))
+        throw InputError("output directory " + dir.string() +
+                         " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
+    };
+    checkEmpty();
+    case_text = readText(options.case_file);
+    fs::create_directories(dir);
+    lock.emplace(dir, "simulate");
+    checkEmpty();  // (again, holding the lock)
+    if (options.overwrite) {
+      const std::vector<std::string> kept = clearRunDirectory(dir);
+      if (!kept.empty()) {
+        std::string names;
+        for (const auto& k : kept) names += (names.empty() ? "" : ", ") + k;
+        std::cerr << "mistfall simulate: note: --overwrite removed the earlier run's files from " << dir
+                  << " and kept what mistfall did not write: " << names << "\n";
+      }
+    }
+    fs::create_directories(dir / "frames");
+    if (config.output.field_spacing > 0.0) fs::create_directories(dir / "fields");
+    writeFileAtomically(dir / kCaseCopy, [&](std::ostream& out) { out << case_text; });
+  }
+  const std::string fingerprint = caseFingerprint(case_text, (dir / kCaseCopy).string());
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  return config.dimension == 2 ? run<2>(config, options, fingerprint) : run<3>(config, options, fingerprint);
+}
+
 }  // namespace
 
 int runSimulate(const SimulateOptions& options) {
-  CaseConfig config;
-  try {
-    if (options.resume) {
-      if (!fs::exists(options.out_dir / kCheckpoint))
-        throw CaseError("cannot resume: " + (options.out_dir / kCheckpoint).string() + " does not exist");
-      config = loadCaseFile(options.out_dir / kCaseCopy);
-      const int dim = checkpointDimension(options.out_dir / kCheckpoint);
-      if (dim != config.dimension)
-        throw CaseError("cannot resume: checkpoint is " + std::to_string(dim) + "D but the case is " +
-                        std::to_string(config.dimension) + "D");
-    } else {
-      config = loadCaseFile(options.case_file);
-      if (options.out_dir.empty()) throw CaseError("no output directory given (--out DIR)");
-      if (fs::exists(options.out_dir) && !fs::is_directory(options.out_dir))
-        throw CaseError("output path " + options.out_dir.string() + " exists and is not a directory");
-      if (fs::exists(options.out_dir) && !fs::is_empty(options.out_dir) && !options.overwrite)
-        throw CaseError("output directory " + options.out_dir.string() +
-                        " exists and is not empty (use --overwrite to replace it, or --resume to continue it)");
-    }
-    if (options.until && !(*options.until > 0.0))
-      throw CaseError("--until must be a positive time in seconds");
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall: " << e.what() << "\n";
-    return 1;
-  }
-  if (options.threads > 0) omp_set_num_threads(options.threads);
-
-  if (!options.resume) {
-    // A run directory that cannot be created (a path through a file, no permission) is bad input too.
-    try {
-      if (options.overwrite) {
-        for (const char* f : {kCheckpoint, kDiagnostics, kCollection, kCaseCopy, kBubbles, kDiverged})
-          fs::remove(options.out_dir / f);
-        fs::remove_all(options.out_dir / "frames");
-        fs::remove_all(options.out_dir / "fields");
-        fs::remove_all(options.out_dir / kTexture);
-      }
-      fs::create_directories(options.out_dir / "frames");
-      if (config.output.field_spacing > 0.0) fs::create_directories(options.out_dir / "fields");
-      const std::string text = readText(options.case_file);
-      writeFileAtomically(options.out_dir / kCaseCopy, [&](std::ostream& out) { out << text; });
-    } catch (const std::exception& e) {
-      std::cerr << "mistfall: cannot set up the run directory " << options.out_dir << ": " << e.what() << "\n";
-      return 1;
-    }
-  }
-  try {
-    return config.dimension == 2 ? run<2>(config, options) : run<3>(config, options);
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall: " << e.what() << "\n";
-    return 2;
-  }
+  return runReportingErrors("mistfall simulate", [&] { return simulate(options); });
 }
 
 }  // namespace mistfall

@@ -18,7 +18,8 @@ struct SimulateOptions {
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
 };
 
-// Exit codes: 0 done, 1 bad input (nothing written), 3 diverged (frames written so far kept).
+// Exit codes: the contract of cli/exit_codes.hpp (1 bad input: nothing written; 3 diverged: frames written so far
+// kept; 4 a case too big for the memory). Holds the run directory's lock (cli/run_lock.hpp) while it works.
 int runSimulate(const SimulateOptions& options);
 
 }  // namespace mistfall

@@ -10,8 +10,12 @@
 #include <iostream>
 
 #include "case/case_file.hpp"
+#include "cli/exit_codes.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_lock.hpp"
 #include "cli/texture_frames.hpp"
+#include "io/grid_fields.hpp"
+#include "io/vtk_writer.hpp"
 
 namespace fs = std::filesystem;
 
@@ -39,35 +43,37 @@ int run(const CaseConfig& config, const TextureOptions& o, const std::vector<Sav
 
 }  // namespace
 
-int runTexture(const TextureOptions& o) {
-  CaseConfig config;
-  std::vector<SavedFrame> frames;
-  try {
-    if (!fs::is_directory(o.run_dir))
-      throw TextureInputError("run directory " + o.run_dir.string() + " does not exist");
-    config = loadCaseFile(o.run_dir / "case.toml");
-    frames = listSavedFrames(o.run_dir);
-    if (frames.empty()) throw TextureInputError("frames.pvd lists no frames");
-    for (const SavedFrame& f : frames) readFrameCategory(f.frame, o.run_dir);  // all classified, before writing
-    const fs::path out = o.run_dir / "texture";
-    if (fs::exists(out) && !fs::is_empty(out) && !o.overwrite)
-      throw TextureInputError(out.string() + " exists and is not empty (use --overwrite to replace it)");
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall texture: " << e.what() << "\n";
-    return 1;
+namespace {
+
+int texture(const TextureOptions& o) {
+  if (!fs::is_directory(o.run_dir))
+    throw TextureInputError("run directory " + o.run_dir.string() + " does not exist");
+  const RunDirLock lock(o.run_dir, "texture");
+  const CaseConfig config = loadCaseFile(o.run_dir / "case.toml");
+  const std::vector<SavedFrame> frames = listSavedFrames(o.run_dir);
+  if (frames.empty()) throw TextureInputError("frames.pvd lists no frames");
+  const fs::path out = o.run_dir / "texture";
+  if (fs::exists(out) && !fs::is_empty(out) && !o.overwrite)
+    throw TextureInputError(out.string() + " exists and is not empty (use --overwrite to replace it)");
+  // Every input readable before anything is written: the frames with their category arrays, the flow grids.
+  for (const SavedFrame& f : frames) {
+    readFrameCategory(f.frame, o.run_dir);
+    if (config.dimension == 2)
+      readVtp<2>(f.frame);
+    else
+      readVtp<3>(f.frame);
+    readVti(f.fields);
   }
   if (o.threads > 0) omp_set_num_threads(o.threads);
-  try {
-    fs::remove_all(o.run_dir / "texture");
-    fs::create_directories(o.run_dir / "texture");
-    return run(config, o, frames);
-  } catch (const TextureInputError& e) {
-    std::cerr << "mistfall texture: " << e.what() << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "mistfall texture: " << e.what() << "\n";
-    return 2;
-  }
+  fs::remove_all(out);
+  fs::create_directories(out);
+  return run(config, o, frames);
+}
+
+}  // namespace
+
+int runTexture(const TextureOptions& o) {
+  return runReportingErrors("mistfall texture", [&] { return texture(o); });
 }
 
 }  // namespace mistfall

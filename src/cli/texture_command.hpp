@@ -17,7 +17,8 @@ struct TextureOptions {
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
 };
 
-// Exit codes: 0 done, 1 bad input (nothing written), 2 I/O failure.
+// Exit codes: cli/exit_codes.hpp (1 bad input, found before anything is written: every frame and grid is read
+// first; 2 I/O failure).
 int runTexture(const TextureOptions& options);
 
 }  // namespace mistfall

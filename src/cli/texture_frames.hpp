@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "case/case_config.hpp"
+#include "io/errors.hpp"
 #include "io/grid_fields.hpp"
 #include "io/pvd_collection.hpp"
 #include "mps/particles.hpp"
@@ -23,8 +24,8 @@
 namespace mistfall {
 
 // Bad input to the texture (exit code 1 for `mistfall texture`): a missing file, an unclassified frame.
-struct TextureInputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct TextureInputError : InputError {
+  using InputError::InputError;
 };
 
 // A saved frame of a run: its time (from frames.pvd), frame and flow-grid files, and its number NNNNN.

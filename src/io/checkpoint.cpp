@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 
 namespace mistfall {
 
@@ -20,7 +21,9 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 2;  // 2 added the enclosed flags
+constexpr std::uint32_t kVersion = 3;  // 2 added the enclosed flags, 3 the case fingerprint
+constexpr std::uint32_t kOldestVersion = 2;  // still read (no fingerprint)
+constexpr std::uint64_t kMaxFingerprint = 1 << 24;
 
 struct Header {
   std::uint32_t version = kVersion;
@@ -32,6 +35,7 @@ struct Header {
   std::int64_t next_frame = 0;
   std::int64_t created = 0;
   std::int64_t removed = 0;
+  std::string fingerprint;  // version 3: the case fingerprint (case/case_fingerprint.hpp)
 };
 // (Serialized field by field, so struct padding never reaches the file.)
 
@@ -60,18 +64,18 @@ class Writer {
   Checksum sum_;
 };
 
+// A checkpoint whose content is wrong is bad input (exit code 1), like any malformed file mistfall reads.
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
-  throw std::runtime_error("checkpoint '" + file.string() + "': " + what);
+  throw InputError("checkpoint '" + file.string() + "': " + what);
 }
 
 class Reader {
  public:
   explicit Reader(const std::filesystem::path& file) : file_(file), in_(file, std::ios::binary) {
-    if (!std::filesystem::exists(file)) fail(file, "file not found");
-    if (!in_) fail(file, "cannot open");
+    if (!in_) throwCannotOpen(file, "checkpoint");
     std::error_code ec;
     size_ = std::filesystem::file_size(file, ec);
-    if (ec) fail(file, "cannot determine size");
+    if (ec) throw std::runtime_error("checkpoint '" + file.string() + "': cannot determine its size");
   }
   void raw(void* data, std::size_t n) {
     if (n > remaining()) fail(file_, "file is truncated");
@@ -104,9 +108,9 @@ Header readHeader(Reader& r, const std::filesystem::path& file) {
   r.resetChecksum();
   Header h;
   h.version = r.value<std::uint32_t>();
-  if (h.version != kVersion) {
-    fail(file, "unsupported format version " + std::to_string(h.version) + " (this build reads version " +
-                   std::to_string(kVersion) + ")");
+  if (h.version < kOldestVersion || h.version > kVersion) {
+    fail(file, "unsupported format version " + std::to_string(h.version) + " (this build reads versions " +
+                   std::to_string(kOldestVersion) + " to " + std::to_string(kVersion) + ")");
   }
   h.dimension = r.value<std::uint32_t>();
   if (h.dimension != 2 && h.dimension != 3) fail(file, "invalid dimension " + std::to_string(h.dimension));
@@ -117,6 +121,12 @@ Header readHeader(Reader& r, const std::filesystem::path& file) {
   h.next_frame = r.value<std::int64_t>();
   h.created = r.value<std::int64_t>();
   h.removed = r.value<std::int64_t>();
+  if (h.version >= 3) {
+    const auto length = r.value<std::uint64_t>();
+    if (length > kMaxFingerprint || length > r.remaining()) fail(file, "file is truncated (bad fingerprint length)");
+    h.fingerprint.resize(length);
+    if (length) r.raw(h.fingerprint.data(), length);
+  }
   return h;
 }
 
@@ -129,7 +139,7 @@ void readVector(Reader& r, std::vector<T>& v, std::size_t n) {
 }  // namespace
 
 template <int D>
-void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s) {
+void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s, const std::string& fingerprint) {
   const Particles<D>& p = s.particles;
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.pressure.size() != n || p.number_density.size() != n || p.kind.size() != n ||
@@ -157,6 +167,9 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
     w.value(h.next_frame);
     w.value(h.created);
     w.value(h.removed);
+    const auto length = static_cast<std::uint64_t>(fingerprint.size());
+    w.value(length);
+    if (length) w.raw(fingerprint.data(), fingerprint.size());
     if (n) {
       w.raw(p.position.data(), n * sizeof(Vec<D>));
       w.raw(p.velocity.data(), n * sizeof(Vec<D>));
@@ -178,9 +191,10 @@ int checkpointDimension(const std::filesystem::path& file) {
 }
 
 template <int D>
-SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
+SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string* fingerprint) {
   Reader r(file);
   const Header h = readHeader(r, file);
+  if (fingerprint) *fingerprint = h.fingerprint;
   if (h.dimension != D) {
     fail(file, "checkpoint is " + std::to_string(h.dimension) + "D, case is " + std::to_string(D) + "D");
   }
@@ -223,9 +237,9 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file) {
   return s;
 }
 
-template void writeCheckpoint<2>(const std::filesystem::path&, const SimulationState<2>&);
-template void writeCheckpoint<3>(const std::filesystem::path&, const SimulationState<3>&);
-template SimulationState<2> readCheckpoint<2>(const std::filesystem::path&);
-template SimulationState<3> readCheckpoint<3>(const std::filesystem::path&);
+template void writeCheckpoint<2>(const std::filesystem::path&, const SimulationState<2>&, const std::string&);
+template void writeCheckpoint<3>(const std::filesystem::path&, const SimulationState<3>&, const std::string&);
+template SimulationState<2> readCheckpoint<2>(const std::filesystem::path&, std::string*);
+template SimulationState<3> readCheckpoint<3>(const std::filesystem::path&, std::string*);
 
 }  // namespace mistfall

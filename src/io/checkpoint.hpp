@@ -2,23 +2,28 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "mps/simulation_state.hpp"
 
 namespace mistfall {
 
-// Layout (little-endian): "MISTFALLCKPT", uint32 version (2), uint32 dimension, uint64 particle count,
-// float64 time, int64 step, float64 dt, int64 next_frame, int64 created, int64 removed (open boundaries), then position (N*D float64), velocity (N*D),
+// Layout (little-endian): "MISTFALLCKPT", uint32 version (3), uint32 dimension, uint64 particle count,
+// float64 time, int64 step, float64 dt, int64 next_frame, int64 created, int64 removed (open boundaries), uint64
+// length and the bytes of the case fingerprint (version 3; case/case_fingerprint.hpp: what a resume must not
+// change), then position (N*D float64), velocity (N*D),
 // pressure (N), number_density (N), kind (N uint8), phase (N uint8), enclosed (N uint8: delta_gl, the
 // flag bubbles keep from step to step), uint64 FNV-1a checksum of every
 // byte after the magic, and the end marker "MISTFALLEND!". Written atomically.
 template <int D>
-void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s);
+void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>& s,
+                     const std::string& fingerprint = {});
 
-// Throws std::runtime_error naming the path on: missing file, wrong magic, unsupported version,
-// dimension mismatch ("checkpoint is 3D, case is 2D"), truncated or corrupted file.
+// Throws InputError naming the path on: missing file, wrong magic, unsupported version, dimension mismatch
+// ("checkpoint is 3D, case is 2D"), truncated or corrupted file; std::runtime_error when it cannot be read.
+// Reads versions 2 (no fingerprint: *fingerprint is empty) and 3.
 template <int D>
-SimulationState<D> readCheckpoint(const std::filesystem::path& file);
+SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string* fingerprint = nullptr);
 
 // The dimension stored in the checkpoint header (2 or 3); same errors as readCheckpoint for the header.
 int checkpointDimension(const std::filesystem::path& file);

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 #include "io/text_format.hpp"
 
 namespace mistfall {
@@ -119,9 +120,9 @@ std::string DiagnosticsWriter::formatRow(const DiagnosticsRow& row) {
 
 std::vector<DiagnosticsRow> DiagnosticsWriter::read(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open diagnostics file '" + file.string() + "'");
+  if (!in) throwCannotOpen(file, "diagnostics file");
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error("diagnostics file '" + file.string() + "' is empty");
+  if (!std::getline(in, line)) throw InputError("diagnostics file '" + file.string() + "' is empty");
   if (!line.empty() && line.back() == '\r') line.pop_back();
   // Map each file column to a known column (or none).
   std::vector<const Column*> mapping;
@@ -132,7 +133,7 @@ std::vector<DiagnosticsRow> DiagnosticsWriter::read(const std::filesystem::path&
     mapping.push_back(found);
   }
   if (mapping.empty() || mapping[0] == nullptr || std::string_view(mapping[0]->name) != "time") {
-    throw std::runtime_error("diagnostics file '" + file.string() + "' has an unexpected header");
+    throw InputError("diagnostics file '" + file.string() + "' has an unexpected header");
   }
   std::vector<DiagnosticsRow> rows;
   std::size_t line_no = 1;
@@ -149,7 +150,7 @@ std::vector<DiagnosticsRow> DiagnosticsWriter::read(const std::filesystem::path&
     }
     if (!ok) {
       if (!complete) break;  // torn final line from an interrupted append
-      throw std::runtime_error("diagnostics file '" + file.string() + "': bad line " + std::to_string(line_no));
+      throw InputError("diagnostics file '" + file.string() + "': bad line " + std::to_string(line_no));
     }
     rows.push_back(row);
   }

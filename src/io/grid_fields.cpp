@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 #include "io/text_format.hpp"
 #include "mps/weight.hpp"
 
@@ -262,7 +263,7 @@ void writeVti(const std::filesystem::path& file, const ImageData& image, bool as
 namespace {
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
-  throw std::runtime_error("malformed VTK ImageData file '" + file.string() + "': " + what);
+  throw InputError("malformed VTK ImageData file '" + file.string() + "': " + what);
 }
 
 // Whitespace-separated numbers of `s`, or nullopt-like failure reported through `ok`.
@@ -289,7 +290,7 @@ std::vector<double> parseNumbers(std::string_view s, bool& ok) {
 
 ImageData readVti(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open VTK ImageData file '" + file.string() + "'");
+  if (!in) throwCannotOpen(file, "VTK ImageData file");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw std::runtime_error("error reading VTK ImageData file '" + file.string() + "'");
   try {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 #include "io/text_format.hpp"
 
 namespace mistfall {
@@ -17,7 +18,7 @@ void PvdCollection::load() {
   entries_.clear();
   if (!std::filesystem::exists(file_)) return;
   std::ifstream in(file_, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open '" + file_.string() + "'");
+  if (!in) throwCannotOpen(file_, "collection file");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   try {
     auto root = text::findTag(doc, "VTKFile");
@@ -34,7 +35,7 @@ void PvdCollection::load() {
     }
   } catch (const std::runtime_error& e) {
     entries_.clear();
-    throw std::runtime_error("malformed collection file '" + file_.string() + "': " + e.what());
+    throw InputError("malformed collection file '" + file_.string() + "': " + e.what());
   }
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "io/atomic_file.hpp"
+#include "io/errors.hpp"
 #include "io/vtk_writer.hpp"
 
 namespace mistfall {
@@ -45,7 +46,7 @@ struct ByteReader {
   std::size_t pos = 0;
   void read(void* out, std::size_t size) {
     if (pos + size > bytes.size())
-      throw std::runtime_error("texture file '" + file.string() + "' is truncated");
+      throw InputError("texture file '" + file.string() + "' is truncated");
     std::memcpy(out, bytes.data() + pos, size);
     pos += size;
   }
@@ -76,21 +77,21 @@ void writeTextureBinary(const std::filesystem::path& file, const TextureCloud& c
 
 TextureSnapshot readTextureBinary(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open texture file '" + file.string() + "'");
+  if (!in) throwCannotOpen(file, "texture file");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ByteReader r{file, bytes};
   char magic[8];
   r.read(magic, sizeof magic);
   if (std::memcmp(magic, kMagic, sizeof magic) != 0)
-    throw std::runtime_error("'" + file.string() + "' is not a mistfall texture file");
+    throw InputError("'" + file.string() + "' is not a mistfall texture file");
   if (const auto version = r.get<std::uint32_t>(); version != kVersion)
-    throw std::runtime_error("texture file '" + file.string() + "' has version " + std::to_string(version) +
+    throw InputError("texture file '" + file.string() + "' has version " + std::to_string(version) +
                              ", expected " + std::to_string(kVersion));
   r.get<std::uint32_t>();
   TextureSnapshot s;
   s.time = r.get<double>();
   const auto n = r.get<std::uint64_t>();
-  if (n > bytes.size()) throw std::runtime_error("texture file '" + file.string() + "' is truncated");
+  if (n > bytes.size()) throw InputError("texture file '" + file.string() + "' is truncated");
   std::vector<double> pos(3 * n), vel(3 * n);
   r.read(pos.data(), pos.size() * sizeof(double));
   r.read(vel.data(), vel.size() * sizeof(double));
@@ -100,14 +101,14 @@ TextureSnapshot readTextureBinary(const std::filesystem::path& file) {
   r.read(kind.data(), n);
   s.id.resize(n);
   r.read(s.id.data(), n * sizeof(std::uint64_t));
-  if (r.pos != bytes.size()) throw std::runtime_error("texture file '" + file.string() + "' has trailing bytes");
+  if (r.pos != bytes.size()) throw InputError("texture file '" + file.string() + "' has trailing bytes");
   s.position.resize(n);
   s.velocity.resize(n);
   s.kind.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     s.position[i] = Vec3(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]);
     s.velocity[i] = Vec3(vel[3 * i], vel[3 * i + 1], vel[3 * i + 2]);
-    if (kind[i] >= kTextureKinds) throw std::runtime_error("texture file '" + file.string() + "' has a bad kind");
+    if (kind[i] >= kTextureKinds) throw InputError("texture file '" + file.string() + "' has a bad kind");
     s.kind[i] = static_cast<TextureKind>(kind[i]);
   }
   return s;

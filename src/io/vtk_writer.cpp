@@ -1,6 +1,8 @@
 // VTK XML PolyData (.vtp) writer (appended raw binary or ascii) and a reader for the files it writes.
 #include "io/vtk_writer.hpp"
 
+#include "io/errors.hpp"
+
 #include <bit>
 #include <cctype>
 #include <cstring>
@@ -104,7 +106,7 @@ struct ArrayInfo {
 };
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& what) {
-  throw std::runtime_error("malformed VTK file '" + file.string() + "': " + what);
+  throw InputError("malformed VTK file '" + file.string() + "': " + what);
 }
 
 template <class T>
@@ -149,7 +151,7 @@ std::vector<T> decodeArray(const std::filesystem::path& file, const std::string&
 // Rethrows `e` as a "malformed VTK file" error unless its message already names `file`.
 [[noreturn]] void rethrowNamingFile(const std::filesystem::path& file, const std::runtime_error& e) {
   const std::string msg = e.what();
-  if (msg.find(file.string()) != std::string::npos) throw e;
+  if (msg.find(file.string()) != std::string::npos) throw;  // (the exception being handled, of its own type)
   fail(file, msg);
 }
 
@@ -178,7 +180,7 @@ struct VtpDocument {
 void parseVtp(const std::filesystem::path& file, VtpDocument& d) {
   d.file = file;
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open VTK file '" + file.string() + "'");
+  if (!in) throwCannotOpen(file, "VTK file");
   d.doc.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw std::runtime_error("error reading VTK file '" + file.string() + "'");
 

@@ -10,7 +10,12 @@ namespace mistfall {
 // The text of render/materials.inc.
 const std::string& defaultMaterials();
 
-// Writes DIR/materials.inc (atomically) unless it exists: an edited copy is kept. Returns true when written.
+// The materials a new run gets: <data directory>/render/materials.inc of an installed mistfall (io/data_files.hpp;
+// users may edit it), else defaultMaterials().
+std::string materialsText();
+
+// Writes DIR/materials.inc (atomically) from materialsText() unless it exists: an edited copy is kept. Returns true
+// when written.
 bool installMaterials(const std::filesystem::path& dir);
 
 }  // namespace mistfall
