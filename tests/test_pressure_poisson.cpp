@@ -6,9 +6,11 @@
 #include <cstdio>
 
 #include "mps/linear_solver.hpp"
+#include "mps/neighbor_search.hpp"
 #include "mps/number_density.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "support/exact_solve.hpp"
+#include "support/lattice.hpp"
 #include "support/run_case.hpp"
 
 using namespace mistfall;
@@ -93,4 +95,50 @@ TEST(PressurePoisson, IccgAndAmgAgree) {
   const Eigen::VectorXd b = solveWith(PressureSolverKind::HypreAmg, sys);
   EXPECT_LT((a - b).norm(), 1e-7 * a.norm());
   EXPECT_LT(relativeResidual(sys.matrix, sys.rhs, b), 1e-9);
+}
+
+// Eq. (17) with the mixed source (numerics.gas_pressure_memory, pressure_poisson.hpp): gas at rest, compressed
+// uniformly by delta, holds p = rho c^2 delta from one step to the next; without the memory term its rows give
+// source_relaxation times that (the gas 1/gamma = 100 times too soft at gamma = 0.01). A 21 x 21 block of gas on a
+// lattice 0.4 % closer than l0, every particle an unknown (a closed gas), no velocity; every particle is given the
+// centre's n* (the block is a piece of a uniformly compressed gas, without the number-density deficit of its edges).
+TEST(PressurePoisson, CompressedGasAtRestHoldsRhoCSquaredDeltaWithTheMemoryTerm) {
+  const double l0 = 0.005, squeeze = 0.996, rho = 1.2, c = 340.0, dt = 2.5e-4, gamma = 0.01;
+  Particles<2> p;
+  test_support::forEachLatticePoint<2>(Eigen::Vector2i(-10, -10), Eigen::Vector2i(10, 10), [&](const Eigen::Vector2i& k) {
+    p.add(squeeze * l0 * k.cast<double>(), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Gas);
+  });
+  const MpsConstants constants = referenceConstants(2, l0, 2.1, 3.1);
+  NeighborSearch<2> search(Vec<2>::Constant(-0.06), Vec<2>::Constant(0.06), constants.re_laplacian);
+  NeighborList nl;
+  search.build(p.position, p.kind, nl);
+  const std::size_t centre = p.size() / 2;
+  const std::vector<double> n_star(p.size(), numberDensityAt<2>(centre, p.position, nl, constants.re_number_density));
+  PressureProblem problem;
+  problem.takes_part.assign(p.size(), 1);
+  problem.unknown.assign(p.size(), 1);
+  problem.carries_velocity.assign(p.size(), 1);
+  problem.sound_speed.assign(p.size(), c);
+  problem.density = rho;
+  const double delta = (n_star[centre] - constants.n0) / constants.n0;
+  ASSERT_GT(delta, 0.005);
+  const double equilibrium = rho * c * c * delta;
+  const PressureSourceTerm source{PressureSource::Mixed, gamma};
+  auto nextPressure = [&](bool memory) {
+    problem.extra_rhs.assign(p.size(), 0.0);
+    if (memory)
+      for (std::size_t i = 0; i < p.size(); ++i)
+        problem.extra_rhs[i] = compressibleMemoryTerm(source, rho * c * c * (n_star[i] - constants.n0) / constants.n0,
+                                                      dt, c);
+    PressureSystem sys;
+    assemblePressureSystem<2>(p, n_star, nl, constants, problem, source, dt, sys);
+    return test_support::solveExactly(sys.matrix, sys.rhs);
+  };
+  const Eigen::VectorXd with = nextPressure(true), without = nextPressure(false);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_NEAR(with[i], equilibrium, 1e-6 * equilibrium) << "particle " << i;
+    EXPECT_NEAR(without[i], gamma * equilibrium, 1e-6 * equilibrium) << "particle " << i;
+  }
+  EXPECT_EQ(compressibleMemoryTerm(PressureSourceTerm{PressureSource::Standard, 1.0}, 100.0, dt, c), 0.0);
+  EXPECT_EQ(compressibleMemoryTerm(source, 100.0, dt, std::numeric_limits<double>::infinity()), 0.0);
 }

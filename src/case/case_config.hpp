@@ -133,6 +133,11 @@ struct NumericsConfig {
   double dispersed_gas_fraction = 0.0;
   // [m/s] largest speed of open gas after its pressure correction (solver_gas.cpp); 0 = no limit
   double gas_speed_limit = 0.0;
+  // With pressure_source = "mixed", the compressible rows of eq. (17) carry the last pressure (the time-integrated
+  // continuity equation of the gas; pressure_poisson.hpp), so compressed gas holds p = rho_g c^2 (n - n0)/n0.
+  // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
+  // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
+  bool gas_pressure_memory = false;
 };
 
 struct OutputConfig {

@@ -9,6 +9,13 @@
 // c = infinity gives the incompressible equation (9) exactly.
 // With the mixed source (Tanaka & Masunaga 2010) the right-hand side becomes
 //   rho * (-1 / dt * <div u*>_i + gamma / dt^2 * (n*_i - n0) / n0)      (divergence by divergence.hpp)
+// and a compressible row (finite c_i) then needs the last pressure p_i^n (numerics.gas_pressure_memory): the gas's
+// continuity equation (1/(rho c^2)) Dp/Dt = -div u integrated over the step, with u^{n+1} = u* - dt/rho grad p, reads
+//   -<lap p>_i + p_i / (dt^2 c_i^2) = -rho/dt <div u*>_i + p_i^n / (dt^2 c_i^2),
+// and the relaxation toward the compression replaces gamma of the memory by the number-density error:
+//   rhs_i += (1 - gamma) p_i^n / (dt^2 c_i^2)      (compressibleMemoryTerm)
+// so gas at rest compressed by delta holds p = rho c^2 delta whatever gamma is. Without the memory term it settles
+// at gamma rho c^2 delta: an effective sound speed sqrt(gamma) c, 34 m/s for air at gamma = 0.01.
 #pragma once
 
 #include <Eigen/Sparse>
@@ -57,6 +64,13 @@ struct PressureSourceTerm {
   PressureSource kind = PressureSource::Standard;
   double relaxation = 1.0;  // gamma (mixed source only)
 };
+
+// The memory term above for a compressible row with last pressure `previous` (0 for the standard source, whose
+// right-hand side already holds the whole compression, and for c = infinity).
+inline double compressibleMemoryTerm(PressureSourceTerm source, double previous, double dt, double sound_speed) {
+  if (source.kind != PressureSource::Mixed || !(sound_speed < std::numeric_limits<double>::infinity())) return 0.0;
+  return (1.0 - source.relaxation) * previous / (dt * dt * sound_speed * sound_speed);
+}
 
 // `number_density` holds n* and p.velocity u* (after the explicit stage).
 template <int D>

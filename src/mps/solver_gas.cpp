@@ -53,6 +53,14 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     if (roles_.enclosed_gas[i]) problem_.sound_speed[i] = std::min(gas.sound_speed, 10.0 * constants_.l0 / dt);
   }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
+  problem_.extra_rhs.clear();
+  if (config_.numerics.gas_pressure_memory) {
+    problem_.extra_rhs.assign(n, 0.0);
+    for (std::int64_t i = 0; i < n; ++i)
+      if (roles_.open_gas[i] && problem_.unknown[i])
+        problem_.extra_rhs[i] = compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]);
+  }
   assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_);
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
   report_.gas_ppe_unknowns = system_.particle_of.size();

@@ -75,6 +75,12 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
+  // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step
+  if (config_.numerics.gas_pressure_memory && std::isfinite(gas.sound_speed) &&
+      source.kind == PressureSource::Mixed)
+    for (std::size_t g = 0; g < group_shift.size(); ++g)
+      lumped_.rhs[lumped_.first_group_row + static_cast<std::int64_t>(g)] +=
+          (1.0 - source.relaxation) * group_shift[g] * group_guess[g];
   Eigen::VectorXd x = Eigen::VectorXd::Zero(lumped_.matrix.rows());
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
