@@ -234,3 +234,23 @@ TEST(CaseFileGas, StabilisedSchemeRefusesGas) {
   EXPECT_HAS(msg, "numerics.scheme = \"stabilised\" is built and validated for water and walls only");
   EXPECT_HAS(msg, "gas regions");
 }
+
+// The bubble's gas motion and the regularisation of its rows (docs/two-phase.md): defaults, values, errors.
+TEST(CaseFileGas, BubbleGasKeys) {
+  const CaseConfig d = parseCase(Parts{}.text(), "t.toml");
+  EXPECT_EQ(d.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::FollowLiquid);
+  EXPECT_DOUBLE_EQ(d.numerics.bubble_regularisation, 10.0);
+  EXPECT_FALSE(d.numerics.gas_pressure_memory);
+  Parts p;
+  p.numerics += "bubble_gas_motion = \"own_pressure\"\nbubble_regularisation = 0\ngas_pressure_memory = true\n";
+  const CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_EQ(c.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::OwnPressure);
+  EXPECT_DOUBLE_EQ(c.numerics.bubble_regularisation, 0.0);
+  EXPECT_TRUE(c.numerics.gas_pressure_memory);
+  p = Parts{};
+  p.numerics += "bubble_gas_motion = \"float\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"follow_liquid\" or \"own_pressure\"");
+  p = Parts{};
+  p.numerics += "bubble_regularisation = -1\n";
+  EXPECT_HAS(errorOf(p.text()), "numerics.bubble_regularisation = -1 is out of range");
+}

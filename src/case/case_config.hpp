@@ -138,6 +138,13 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
+  // How a bubble's gas moves (docs/two-phase.md). FollowLiquid: with the liquid's velocity extended into the bubble,
+  // re-spaced in position by the gas system. OwnPressure: like open gas, by its own pressure gradient from the gas
+  // system (the paper's single-phase view of the gas), velocity and position.
+  enum class BubbleGasMotion { FollowLiquid, OwnPressure } bubble_gas_motion = BubbleGasMotion::FollowLiquid;
+  // The bubble's rows of the gas system use c = min(c_g, this * l0 / dt) (a regularisation: a bubble and its liquid
+  // ring form a block with no free surface, whose pressure level an incompressible gas leaves undetermined); 0 = none
+  double bubble_regularisation = 10.0;
 };
 
 struct OutputConfig {

@@ -48,9 +48,12 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     problem_.carries_velocity[i] = isActive(p.kind[i]);
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
-    // P_B), so a (nearly) incompressible gas gets a regularising sound speed of 10 l0 / dt on the bubble's rows
-    // (a shift of about 1e-3 of the diagonal, which leaves the solve well conditioned).
-    if (roles_.enclosed_gas[i]) problem_.sound_speed[i] = std::min(gas.sound_speed, 10.0 * constants_.l0 / dt);
+    // P_B), so a (nearly) incompressible gas gets a regularising sound speed of numerics.bubble_regularisation
+    // l0 / dt on the bubble's rows (10: a shift of about 1e-3 of the diagonal, which keeps the solve well
+    // conditioned; 0: none, the paper's incompressible gas).
+    if (roles_.enclosed_gas[i] && config_.numerics.bubble_regularisation > 0.0)
+      problem_.sound_speed[i] =
+          std::min(gas.sound_speed, config_.numerics.bubble_regularisation * constants_.l0 / dt);
   }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
@@ -113,10 +116,11 @@ void MpsSolver<D>::correctGas(double dt) {
     capped += cut;
   }
   report_.gas_corrections_capped = capped;
+  const bool own_pressure = config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
-    if (!roles_.enclosed_gas[i]) p.velocity[i] += change[i];
+    if (!roles_.enclosed_gas[i] || own_pressure) p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
   }
 }
@@ -131,9 +135,11 @@ void MpsSolver<D>::riseEntrainedGas(double dt) {
                                                               constants_.l0, speed, dt, state_.step);
 }
 
-// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp).
+// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp), unless numerics.bubble_gas_motion =
+// "own_pressure" (then it keeps its predicted velocity and the gas system corrects it like open gas).
 template <int D>
 void MpsSolver<D>::moveBubbleGas(double dt) {
+  if (config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure) return;
   extendVelocityIntoBubbles<D>(state_.particles, neighbours_, roles_, constants_.re_number_density, dt);
 }
 
