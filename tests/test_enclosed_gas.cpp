@@ -2,6 +2,8 @@
 // gas layer, gas at a wall, two bubbles' ids, a one-particle bubble, escaped particles, a brute-force
 // reference on random gas, and thread-count independence.
 #include <gtest/gtest.h>
+
+#include <set>
 #include <omp.h>
 
 #include <random>
@@ -433,4 +435,57 @@ TEST(GasRegions, DispersedGasDoesNotJoinTheWatersAirToTheAirAbove) {
   GasRegions strict;
   findGasRegions<2>(p, nl, kLink, kL0, strict, options);
   EXPECT_EQ(strict.regionCount(), 1u);
+}
+
+// numerics.dispersed_gas_touch: air in a one-particle dip of the water's surface has 8 water neighbours of 12, so at
+// dispersed_gas_fraction 0.5 it is dispersed and becomes a pocket of its own, enclosed in the water (the rule that
+// carried channel-surface air into the waterfall's water, docs/waterfall.md). Touching the air above (1 l0 away), it
+// joins the air's region with the touch rule. A dispersed particle between two separate pockets of air joins only
+// the nearer one: the two stay two regions.
+TEST(GasRegions, DispersedGasTouchingTheAirJoinsItAndNeverBridgesTwoRegions) {
+  const Index<2> lo(-6, -6), hi(6, 4);
+  auto dip = [](const Index<2>& k) { return k[0] == 0 && k[1] == 0; };
+  const auto p = makeLattice<2>(lo, hi, [&](const Index<2>& k) { return (k[1] >= 1 || dip(k)) ? kGas : kLiquid; });
+  const auto nl = neighbours<2>(p);
+  std::size_t in_dip = p.size();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if ((p.position[i] - at<2>(Index<2>(0, 0))).norm() < 1e-9) in_dip = i;
+  ASSERT_LT(in_dip, p.size());
+  const std::size_t top = p.size() - 1;
+  GasRegionOptions options;
+  options.dispersed_fraction = 0.5;
+  GasRegions apart, touching;
+  findGasRegions<2>(p, nl, kLink, kL0, apart, options);
+  EXPECT_NE(apart.region_of[in_dip], apart.region_of[top]);
+  EXPECT_TRUE(apart.enclosed_particle[in_dip]) << "without the touch rule the dip's air is a pocket in the water";
+  options.dispersed_touch = 1.5 * kL0;
+  findGasRegions<2>(p, nl, kLink, kL0, touching, options);
+  EXPECT_EQ(touching.region_of[in_dip], touching.region_of[top]);
+  EXPECT_FALSE(touching.enclosed_particle[in_dip]) << "it is the open air it touches";
+  EXPECT_EQ(touching.regionCount(), 1u);
+
+  // Two pockets of 4 x 6 air in the water, two columns apart, and one dispersed air particle between them that
+  // touches both (1 l0 from the left one, 2 l0 from the right one; touch radius 2.1 l0, join radius 1.5 l0).
+  auto pocket = [](const Index<2>& k) {
+    return (k[1] >= 0 && k[1] <= 5) && ((k[0] >= -6 && k[0] <= -3) || (k[0] >= 0 && k[0] <= 3));
+  };
+  auto lone = [](const Index<2>& k) { return k[0] == -2 && k[1] == 2; };
+  const auto q = makeLattice<2>(Index<2>(-10, -5), Index<2>(7, 10),
+                                [&](const Index<2>& k) { return (pocket(k) || lone(k)) ? kGas : kLiquid; });
+  GasRegionOptions join_wide;
+  join_wide.join_radius = 1.5 * kL0;
+  join_wide.dispersed_fraction = 0.5;
+  join_wide.dispersed_touch = 2.1 * kL0;
+  GasRegions two;
+  findGasRegions<2>(q, neighbours<2>(q), kLink, kL0, two, join_wide);
+  std::set<std::int32_t> pockets;
+  std::int32_t lone_region = -1, left_region = -1;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (!isGas(q.kind[i], q.phase[i])) continue;
+    const Vec<2> d = (q.position[i] - origin<2>()) / kL0;
+    if (std::abs(d[0] + 2.0) < 1e-9 && std::abs(d[1] - 2.0) < 1e-9) lone_region = two.region_of[i];
+    else pockets.insert(two.region_of[i]);
+    if (std::abs(d[0] + 3.0) < 1e-9 && std::abs(d[1] - 2.0) < 1e-9) left_region = two.region_of[i];
+  }
+  EXPECT_EQ(lone_region, left_region) << "the dispersed particle joins the nearer pocket";
 }

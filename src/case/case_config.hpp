@@ -131,6 +131,9 @@ struct NumericsConfig {
   // Gas with at least this fraction of liquid among its neighbours is mixed into the water and joins no gas region
   // (enclosed_gas.hpp); 0 = off
   double dispersed_gas_fraction = 0.0;
+  // Dispersed gas closer than this (/ l0) to gas that is not dispersed joins the nearest such particle's region
+  // (enclosed_gas.hpp); 0 = off
+  double dispersed_gas_touch = 0.0;
   // [m/s] largest speed of open gas after its pressure correction (solver_gas.cpp); 0 = no limit
   double gas_speed_limit = 0.0;
   // With pressure_source = "mixed", the compressible rows of eq. (17) carry the last pressure (the time-integrated

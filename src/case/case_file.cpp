@@ -141,7 +141,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
-                "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory",
+                "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_gas_motion", "bubble_regularisation"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
@@ -179,6 +179,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
+  rd.number(nm, np, "dispersed_gas_touch", {0.0, 5.0, false, false}, n.dispersed_gas_touch);
   if (int s = rd.choice(nm, np, "bubble_gas_motion", {"follow_liquid", "own_pressure"}); s >= 0)
     n.bubble_gas_motion = s == 0 ? NumericsConfig::BubbleGasMotion::FollowLiquid
                                  : NumericsConfig::BubbleGasMotion::OwnPressure;

@@ -103,6 +103,23 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
     }
   }
 
+  // Dispersed gas touching undispersed gas joins the nearest such particle's region (never two: no bridge).
+  if (options.dispersed_touch > 0.0) {
+    const double touch2 = options.dispersed_touch * options.dispersed_touch;
+    for (std::int64_t i = 0; i < count; ++i) {
+      if (!gas(i) || !dispersed[i]) continue;
+      std::int32_t nearest = -1;
+      double best = touch2;
+      for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+        const auto j = nl.indices[s];
+        if (!gas(j) || dispersed[j]) continue;
+        const double r2 = (p.position[j] - p.position[i]).squaredNorm();
+        if (r2 < best || (r2 == best && nearest >= 0 && j < nearest)) best = r2, nearest = j;
+      }
+      if (nearest >= 0) uf.join(static_cast<std::int32_t>(i), nearest);
+    }
+  }
+
   // Region ids in the order of each component's root (its smallest index, met before its other particles).
   out.region_of.assign(n, -1);
   out.enclosed.clear();

@@ -15,6 +15,10 @@
 //    churned plunge zone, a film of air between water particles). It links to no other gas particle, so it is a
 //    region of its own, and a chain of such particles cannot join the water's air to the air above. Air next to a
 //    flat water surface has 4 liquid neighbours of 12 (1/3) in 2D, air in a slot one particle wide 8 of 12.
+//    With `dispersed_touch` T > 0 (numerics.dispersed_gas_touch) a dispersed particle closer than T to gas that is
+//    not dispersed joins the region of the nearest such particle, and only that one (ties: the smallest index), so
+//    air in a dip of the water's surface stays the open air it touches, and dispersed gas never bridges two
+//    regions.
 //  * A region is enclosed (a bubble) when both hold for every one of its particles i:
 //      - every active non-gas particle j with |r_j - r_i| < R is a liquid fluid particle (no wall, no dummy);
 //      - i has at least kEnclosedMinNeighbourFraction * full_count active neighbours (any kind) within R, where
@@ -77,6 +81,7 @@ struct GasRegionOptions {
   std::size_t closed_small_region = 0;              // closed gas domain: the pocket size limit (0: open domain)
   double join_radius = 0.0;                         // [m]; 0: the link radius
   double dispersed_fraction = 0.0;                  // 0: no gas counts as dispersed
+  double dispersed_touch = 0.0;                     // [m]; 0: dispersed gas joins nothing
 };
 
 template <int D>

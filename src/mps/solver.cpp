@@ -149,6 +149,7 @@ GasRegionOptions MpsSolver<D>::gasRegionOptions(const std::vector<char>* was_enc
     options.closed_small_region = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
   options.join_radius = config_.numerics.gas_region_link * constants_.l0;
   options.dispersed_fraction = config_.numerics.dispersed_gas_fraction;
+  options.dispersed_touch = config_.numerics.dispersed_gas_touch * constants_.l0;
   return options;
 }
 
