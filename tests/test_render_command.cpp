@@ -89,7 +89,7 @@ class ScopedPath {
 TEST(RenderCommand, PreviewWritesMeshesScenesImagesAndAnimation) {
   ASSERT_TRUE(findOnPath("povray") && findOnPath("ffmpeg")) << "scripts/install-deps.sh installs povray and ffmpeg";
   const fs::path run = makeRun("render_command");
-  const auto r = runCli("render " + quoted(run) + " --preview --jobs 2 --plain-progress");
+  const auto r = runCli("render " + quoted(run) + " --preview --jobs 2 --export --plain-progress");
   ASSERT_EQ(r.code, 0) << r.err;
   const fs::path out = run / "render";
   for (const char* f : {"materials.inc", "natural.inc", "lab.inc", "export/water_00000.ply", "export/water_00001.ply",
@@ -113,7 +113,7 @@ TEST(RenderCommand, PreviewWritesMeshesScenesImagesAndAnimation) {
 
   // Rendered anew with --keep-intermediates: the scene, the mesh include stay.
   fs::remove_all(out / "preview");
-  const auto kept = runCli("render " + quoted(run) + " --preview --keep-intermediates --no-export --plain-progress");
+  const auto kept = runCli("render " + quoted(run) + " --preview --keep-intermediates --plain-progress");
   ASSERT_EQ(kept.code, 0) << kept.err;
   EXPECT_TRUE(fs::exists(out / "mesh_00001.inc"));
   const std::string scene = slurp(out / "scene_00001.pov");
@@ -128,7 +128,7 @@ TEST(RenderCommand, FrameIntervalPicksTheFramesNearestToItsMultiples) {
   std::string text = slurp(run / "case.toml");
   text.replace(text.find("[render]\n"), 9, "[render]\nframe_interval = 0.02\n");
   std::ofstream(run / "case.toml") << text;
-  const auto r = runCli("render " + quoted(run) + " --preview --no-export --plain-progress");
+  const auto r = runCli("render " + quoted(run) + " --preview --plain-progress");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(run / "render/preview/frame_00000.png"));
   EXPECT_FALSE(fs::exists(run / "render/preview/frame_00001.png"));

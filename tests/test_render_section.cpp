@@ -118,3 +118,22 @@ TEST(RenderSection, NoiseIsSmoothAndBounded) {
   EXPECT_LT(lo, -0.3);
   EXPECT_GT(hi, 0.3);
 }
+
+TEST(RenderSection, JetLinksJoinAFallingFileOfParticlesIntoOneSheet) {
+  // 12 particles 3 l0 apart on a steep line, falling along it at 2 m/s: too far apart for their discs to touch.
+  std::vector<Vec<2>> x, u;
+  const Vec<2> dir = Vec<2>(0.3, -1.0).normalized();
+  for (int i = 0; i < 12; ++i) x.push_back(3.0 * kL0 * i * dir), u.push_back(2.0 * dir);
+  JetLinkParameters p;
+  p.spacing = kL0;
+  const auto links = jetLinks(x, u, p);
+  EXPECT_GE(links.size(), 11u);
+  for (const auto& link : links) EXPECT_NEAR(link.radius, 0.35 * kL0, 1e-12);  // l0^2 / (2 * 3 l0) < 0.35 l0
+  EXPECT_GT(loops(section(x)), 1);  // the discs alone: separate drops
+  const SectionMesh sheet = marchingSquares(sectionField({}, {kL0}, links));
+  EXPECT_EQ(loops(sheet), 1);
+  // Moving across the line instead, or too slowly, they are not a jet.
+  std::vector<Vec<2>> across(x.size(), 2.0 * Vec<2>(dir.y(), -dir.x())), slow(x.size(), 0.1 * dir);
+  EXPECT_TRUE(jetLinks(x, across, p).empty());
+  EXPECT_TRUE(jetLinks(x, slow, p).empty());
+}

@@ -78,8 +78,8 @@ int main(int argc, char** argv) {
       "frames, their category array and RUN_DIR/texture/texture_NNNNN.bin (mist, micro-bubbles) when present.\n"
       "Writes RUN_DIR/render/: materials.inc, natural.inc, lab.inc (once; edit them to restyle), per frame\n"
       "mesh_NNNNN.inc, mist_/white_NNNNN.df3 and scene_NNNNN.pov (deleted once the image is done unless\n"
-      "--keep-intermediates), png/frame_NNNNN.png (preview/ with --preview), export/water_NNNNN.ply and\n"
-      "export/volumes_NNNNN.vdb (unless --no-export), log/, timings.csv and the animation. Frames whose image\n"
+      "--keep-intermediates), png/frame_NNNNN.png (preview/ with --preview), with --export export/water_NNNNN.ply\n"
+      "and export/volumes_NNNNN.vdb, log/, timings.csv and the animation. Frames whose image\n"
       "exists are skipped. Needs the Debian packages povray and ffmpeg (docs/render.md).\n"
       "Exit codes: 0 done, 1 bad input or povray/ffmpeg missing (nothing written), 2 a write or povray/ffmpeg failed.");
   render->add_option("run_dir", ren.run_dir, "Run directory written by `mistfall simulate`")->required();
@@ -90,7 +90,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   render->add_flag("--keep-intermediates", ren.keep_intermediates,
                    "Keep each frame's scene, mesh include and density files after its image is done");
-  render->add_flag("--no-export", ren.no_export, "Do not write export/water_NNNNN.ply and export/volumes_NNNNN.vdb");
+  render->add_flag("--export", ren.export_files,
+                   "Also write export/water_NNNNN.ply and export/volumes_NNNNN.vdb (Blender, Houdini; docs/render.md)");
   render->add_flag("--plain-progress", ren.force_plain_progress, "Log progress lines instead of a progress bar");
 
   mistfall::RunOptions pipe;
@@ -108,6 +109,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   run->add_flag("--preview", pipe.preview, "Render small preview images (see `render --help`)");
   run->add_flag("--keep-intermediates", pipe.keep_intermediates, "Keep the render's scenes, meshes and densities");
+  run->add_flag("--export", pipe.export_files, "Render: also write the PLY meshes and OpenVDB volumes");
   run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
   run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
 

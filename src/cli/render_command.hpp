@@ -3,8 +3,8 @@
 // writes, under RUN_DIR/render/, the water surface (mesh_NNNNN.inc), the mist's and white water's densities
 // (mist_/white_NNNNN.df3) and the scene (scene_NNNNN.pov) (src/render/frame_files.hpp), runs povray on it,
 // several frames at a time (--jobs), and deletes those intermediates when the image is complete (unless
-// --keep-intermediates); export/water_NNNNN.ply and export/volumes_NNNNN.vdb stay for other renderers (unless
-// --no-export). Then ffmpeg joins the images into RUN_DIR/render/<case>.mp4 and <case>.gif. --preview renders
+// --keep-intermediates); with --export it also writes export/water_NNNNN.ply and export/volumes_NNNNN.vdb for
+// other renderers. Then ffmpeg joins the images into RUN_DIR/render/<case>.mp4 and <case>.gif. --preview renders
 // smaller images with less quality into RUN_DIR/render/preview/. Style, camera, sun and sizes: [render] of
 // RUN_DIR/case.toml. Uses the frames' category array and RUN_DIR/texture/texture_NNNNN.bin (mist,
 // micro-bubbles, droplet and bubble sources) when they are there. Images are rendered under a temporary name and
@@ -22,7 +22,7 @@ struct RenderOptions {
   int jobs = 0;                       // povray processes at once; 0: the number of cores
   int povray_threads = 1;             // render threads of each povray process (+WT)
   bool keep_intermediates = false;    // keep scene_NNNNN.pov, mesh_NNNNN.inc and the .df3 files
-  bool no_export = false;             // no export/water_NNNNN.ply and export/volumes_NNNNN.vdb
+  bool export_files = false;          // also export/water_NNNNN.ply and export/volumes_NNNNN.vdb
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
 };
 

@@ -5,7 +5,7 @@
 //   mist_NNNNN.df3     the mist's density, white_NNNNN.df3 the white water's (frame_volumes.hpp), when present;
 //   scene_NNNNN.pov    the scene (scene_writer.hpp).
 // These are the intermediates: `mistfall render` deletes them once the frame's image exists, unless asked to keep
-// them. With exports on it also writes, kept: export/water_NNNNN.ply (binary PLY with normals) and
+// them. With exports on (`render --export`) it also writes, kept: export/water_NNNNN.ply (binary PLY with normals) and
 // export/volumes_NNNNN.vdb (OpenVDB float grids "mist" (volume fraction of water in the air) and "white_water"
 // (extinction [1/m]), in the simulation's coordinates, metres).
 #pragma once

@@ -12,6 +12,9 @@ namespace mistfall {
 
 namespace {
 
+constexpr int kMinSheetDroplets = 6;  // droplets in a linked chain that make it a sheet
+constexpr double kFoamReach = 1.5;    // [l0] a surface particle this close to air in the water is foam
+
 template <int D>
 Vec<3> padded(const Vec<D>& x) {
   Vec<3> v = Vec<3>::Zero();
@@ -75,15 +78,47 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
   auto categoryOf = [&](std::size_t i) {
     return category.empty() ? Category::None : static_cast<Category>(category[i]);
   };
+  // Foam: liquid surface particles within kFoamReach l0 of air in the water (where the jet drags air under).
+  std::vector<Vec<D>> air_points;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas &&
+        (categoryOf(i) == Category::Bubble || p.enclosed[i]))
+      air_points.push_back(p.position[i]);
+  for (std::size_t i : liquid) {
+    if (categoryOf(i) != Category::LiquidSurface) continue;
+    for (const Vec<D>& a : air_points)
+      if ((a - p.position[i]).norm() < kFoamReach * l0) {
+        if constexpr (D == 2) s.foam_across.push_back(p.position[i]);
+        else s.foam.push_back(p.position[i]);
+        break;
+      }
+  }
   std::vector<char> in_sheet(p.size(), 0);
   if constexpr (D == 2) {
     std::vector<Vec<2>> x, u;
     for (std::size_t i : liquid) x.push_back(p.position[i]), u.push_back(p.velocity[i]);
     JetLinkParameters jp;
     jp.spacing = l0;
-    for (SectionLink& link : jetLinks(x, u, jp)) {
+    std::vector<SectionLink> links = jetLinks(x, u, jp);
+    // Droplets joined by links into chains (union-find); only chains of kMinSheetDroplets droplets or more are a
+    // sheet: a short chain of spray extruded across the fall would be a plate of glass.
+    std::vector<int> parent(x.size());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
+    auto root = [&](int k) {
+      while (parent[k] != k) k = parent[k] = parent[parent[k]];
+      return k;
+    };
+    auto isDroplet = [&](int k) { return categoryOf(liquid[k]) == Category::Droplet; };
+    for (const SectionLink& link : links)
+      if (isDroplet(link.from) && isDroplet(link.to)) parent[root(link.from)] = root(link.to);
+    std::vector<int> droplets_in(x.size(), 0);
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (isDroplet(static_cast<int>(k))) ++droplets_in[root(static_cast<int>(k))];
+    for (const SectionLink& link : links) {
       const std::size_t a = liquid[link.from], b = liquid[link.to];
       if (categoryOf(a) == Category::LiquidBulk && categoryOf(b) == Category::LiquidBulk) continue;
+      const int drop = isDroplet(link.from) ? link.from : isDroplet(link.to) ? link.to : -1;
+      if (drop >= 0 && droplets_in[root(drop)] < kMinSheetDroplets) continue;
       in_sheet[a] = in_sheet[b] = 1;
       s.links.push_back(link);
     }

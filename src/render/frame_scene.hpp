@@ -1,10 +1,12 @@
 // What one frame puts into its scene (docs/render.md):
 //  * water: the fluid liquid particles except droplets (category 3) when the frame is classified: a 2D frame's
 //    section (section_mesh.hpp, extruded across render.extrusion_width) with the links of its jets
-//    (jet_links.hpp; a linked droplet is part of a sheet: its links' capsules draw it), a 3D frame's centres
+//    (jet_links.hpp; a chain of 6 or more linked droplets is a sheet: its links' capsules draw it; shorter
+//    chains are spray, drawn as droplets), a 3D frame's centres
 //    (surface_mesh.hpp);
 //  * air in the water, for the white water: gas particles the solver marked enclosed in liquid and bubbles
-//    (category 6); and the texture's micro-bubble representatives;
+//    (category 6); foam: liquid surface particles (category 2) within 1.5 l0 of such air; and the texture's
+//    micro-bubble representatives;
 //  * mist: the texture's mist representatives (a medium, or spheres in the lab style);
 //  * droplets as spheres of diameter l0: the frame's category-3 particles not in a sheet; in 2D at the z of the
 //    texture's nearest droplet source within 2 l0 (a place across the fall that stays from frame to frame), else
@@ -32,6 +34,8 @@ struct FrameScene {
   std::vector<Vec<3>> liquid;         // 3D: liquid centres to mesh
   std::vector<Vec<2>> air_across;     // 2D: air in the water, each a row across the fall
   std::vector<Vec<3>> air;            // 3D: air in the water
+  std::vector<Vec<2>> foam_across;    // 2D: foam, each a row across the fall
+  std::vector<Vec<3>> foam;           // 3D: foam
   std::vector<Vec<3>> micro_bubbles;  // texture: micro-bubble representatives
   std::vector<Vec<3>> mist;           // texture: mist representatives
   SceneContent content;               // everything but the mesh include and the volumes

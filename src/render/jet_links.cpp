@@ -24,8 +24,8 @@ std::vector<SectionLink> jetLinks(const std::vector<Vec<2>>& x, const std::vecto
     const double speed = u[i].norm();
     if (speed < p.min_speed) continue;
     const Vec<2> dir = u[i] / speed;
-    int best = -1;
-    double best_d = reach;
+    // The nearest `per_particle` particles ahead of i that move the same way.
+    std::vector<std::pair<double, int>> ahead;
     for (int di = -1; di <= 1; ++di)
       for (int dj = -1; dj <= 1; ++dj) {
         const auto it = cells.find(key(x[i] + Vec<2>(di * reach, dj * reach)));
@@ -33,16 +33,19 @@ std::vector<SectionLink> jetLinks(const std::vector<Vec<2>>& x, const std::vecto
         for (int j : it->second) {
           const Vec<2> d = x[j] - x[i];
           const double len = d.norm();
-          if (j == static_cast<int>(i) || len <= 0.0 || len > best_d) continue;
+          if (j == static_cast<int>(i) || len <= 0.0 || len > reach) continue;
           const double uj = u[j].norm();
           if (d.dot(dir) < cos_max * len || uj <= 0.0 || u[j].dot(dir) < cos_max * uj) continue;
-          best = j, best_d = len;
+          ahead.emplace_back(len, j);
         }
       }
-    if (best < 0) continue;
-    const double r = std::clamp(p.spacing * p.spacing / (2.0 * best_d), p.min_radius * p.spacing,
-                                p.max_radius * p.spacing);
-    links.push_back({x[i], x[best], r, static_cast<int>(i), best});
+    std::sort(ahead.begin(), ahead.end());
+    if (ahead.size() > static_cast<std::size_t>(p.per_particle)) ahead.resize(p.per_particle);
+    for (const auto& [len, j] : ahead) {
+      const double r = std::clamp(p.spacing * p.spacing / (2.0 * len), p.min_radius * p.spacing,
+                                  p.max_radius * p.spacing);
+      links.push_back({x[i], x[j], r, static_cast<int>(i), j});
+    }
   }
   return links;
 }

@@ -49,7 +49,7 @@ std::string sceneText(const RenderConfig& r, const SceneContent& c, const std::s
   out.precision(9);
   out << "// " << title << " -- written by mistfall render; the look is in materials.inc and "
       << styleInclude(r.style) << "\n#version 3.7;\n"
-      << "global_settings { assumed_gamma 1.0 max_trace_level 12 }\n\n"
+      << "global_settings { assumed_gamma 1.0 max_trace_level 8 adc_bailout 0.01 }\n\n"
       << "#declare Frame_Time = " << c.time << ";\n"
       << "#declare Up = " << vec(axis(c.up_axis)) << ";\n"
       << "#declare Camera_Location = " << vec(r.camera_location) << ";\n"

@@ -101,9 +101,10 @@ SectionField sectionField(const std::vector<Vec<2>>& centres, const SectionParam
   if (!(l0 > 0.0)) throw std::invalid_argument("sectionField: particle spacing must be > 0");
   SectionField f;
   f.h = p.cell_fraction * l0;
-  if (centres.empty()) return f;
-  Vec<2> lo = centres.front(), hi = centres.front();
+  if (centres.empty() && links.empty()) return f;
+  Vec<2> lo = centres.empty() ? links.front().a : centres.front(), hi = lo;
   for (const auto& c : centres) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  for (const auto& l : links) lo = lo.cwiseMin(l.a).cwiseMin(l.b), hi = hi.cwiseMax(l.a).cwiseMax(l.b);
   const double margin = (p.radius + kReach) * l0 + 2.0 * f.h;
   f.origin = lo - Vec<2>::Constant(margin);
   f.nx = static_cast<int>(std::ceil((hi.x() - lo.x() + 2.0 * margin) / f.h)) + 1;
