@@ -61,6 +61,7 @@ TEST(RenderCase, StyleVolumesAndFramesHaveDefaultsAndChecks) {
   EXPECT_TRUE(c.render.mist);
   EXPECT_TRUE(c.render.white_water);
   EXPECT_TRUE(c.render.hidden_regions.empty());
+  EXPECT_DOUBLE_EQ(c.render.bank_width, 0.5);  // half the domain's larger extent
   p.output += "[render]\nstyle = \"lab\"\nframe_interval = 0.1\nmist = false\nsheet_variation = 0\n";
   const RenderConfig r = parseCase(p.text(), "x.toml").render;
   EXPECT_EQ(r.style, RenderStyle::Lab);

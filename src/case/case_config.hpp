@@ -167,6 +167,8 @@ struct RenderConfig {
   std::vector<std::string> hidden_regions;   // wall regions not drawn (a closed box's lid, an inflow gate)
   double bank_level = 0.0;                   // [m] top of the basin's banks (natural); default: lowest water
                                              // region's top + 2 l0
+  double bank_width = 0.0;                   // [m] natural, 2D: rock beside the water across the fall; default
+                                             // half the domain's larger extent
   double frame_rate = 25.0;                  // frames per second of the MP4 and GIF
   bool mist = true;                          // mist representatives as a participating medium (lab: spheres)
   double mist_voxel = 0.0;                   // [m] voxel of the mist's density grid; default l0

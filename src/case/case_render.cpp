@@ -20,8 +20,8 @@ Box sceneBox(const CaseConfig& c) {
 
 // Default camera and light: look at the scene box's centre from the front (3D: from -y, z up; 2D: from +z, y up),
 // from far enough that the box's width and height fill 85 % of the view, a little from above; the light above,
-// left of and in front of the camera's side. The natural style then turns the camera 35 degrees about the up axis
-// toward +x (downstream): a three-quarter view.
+// left of and in front of the camera's side. The natural style raises the camera by another half of that extent
+// and turns it 35 degrees about the up axis toward +x (downstream): a three-quarter view from above.
 void defaultView(const CaseConfig& c, RenderConfig& r) {
   const Box b = sceneBox(c);
   const int up = c.dimension == 3 ? 2 : 1, depth = c.dimension == 3 ? 1 : 2;
@@ -39,7 +39,8 @@ void defaultView(const CaseConfig& c, RenderConfig& r) {
   r.light_location[0] -= 1.0 * extent;
   r.light_location[up] += 2.0 * extent;
   r.light_location[depth] += toward_camera * 2.0 * extent;
-  if (r.style == RenderStyle::Natural) {
+  if (r.style == RenderStyle::Natural) {  // from higher up: the water sits in a basin below the banks
+    r.camera_location[up] += 0.5 * extent;
     const double a = 35.0 * M_PI / 180.0;
     const double dx = r.camera_location[0] - r.camera_look_at[0], dd = r.camera_location[depth] - r.camera_look_at[depth];
     r.camera_location[0] = r.camera_look_at[0] + std::cos(a) * dx + std::sin(a) * std::abs(dd);
@@ -95,11 +96,12 @@ void readRender(const Reader& rd, const toml::table& root, CaseConfig& c) {
   r.mist_voxel = l0;
   r.frame_interval = c.output.interval;
   r.bank_level = defaultBankLevel(c);
+  r.bank_width = 0.5 * std::max(c.domain.max[0] - c.domain.min[0], c.domain.max[c.dimension - 1] - c.domain.min[c.dimension - 1]);
   const toml::table& t = rd.table(root, "", p);
   rd.checkKeys(t, p,
                {"style", "camera_location", "camera_look_at", "camera_angle", "light_location", "image_width",
                 "image_height", "preview_width", "preview_height", "antialias", "frame_interval", "extrusion_width",
-                "sheet_variation", "variation_length", "hidden_regions", "bank_level", "frame_rate", "mist",
+                "sheet_variation", "variation_length", "hidden_regions", "bank_level", "bank_width", "frame_rate", "mist",
                 "mist_voxel", "white_water", "white_water_bubble_diameter", "mist_radius", "micro_bubble_radius"});
   if (int s = rd.choice(t, p, "style", {"natural", "lab"}); s >= 0) r.style = static_cast<RenderStyle>(s);
   rd.number(t, p, "camera_angle", {0.0, 180.0, true, true}, r.camera_angle);
@@ -114,6 +116,7 @@ void readRender(const Reader& rd, const toml::table& root, CaseConfig& c) {
   rd.number(t, p, "variation_length", {0.0, 1e3, true, false}, r.variation_length);
   readHiddenRegions(rd, t, p, c);
   rd.number(t, p, "bank_level", {-1e6, 1e6, false, false}, r.bank_level);
+  rd.number(t, p, "bank_width", {0.0, 1e6, false, false}, r.bank_width);
   rd.number(t, p, "frame_rate", {1.0, 120.0, false, false}, r.frame_rate);
   rd.boolean(t, p, "mist", r.mist);
   rd.number(t, p, "mist_voxel", {0.0, 1.0, true, false}, r.mist_voxel);

@@ -147,7 +147,9 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
     if (std::find(r.hidden_regions.begin(), r.hidden_regions.end(), region.name) != r.hidden_regions.end()) continue;
     Box b = region.box;
     if (D == 2) b.min[2] = -0.5 * r.extrusion_width, b.max[2] = 0.5 * r.extrusion_width;
-    if (segmentHitsBox(r.camera_location, r.camera_look_at, b)) continue;
+    Box drawn = b;  // natural style, 2D: the rock is widened across the fall by bank_width
+    if (D == 2 && r.style == RenderStyle::Natural) drawn.min[2] -= r.bank_width, drawn.max[2] += r.bank_width;
+    if (segmentHitsBox(r.camera_location, r.camera_look_at, drawn)) continue;
     c.walls.push_back(b);
     c.wall_names.push_back(region.name);
   }

@@ -60,6 +60,7 @@ std::string sceneText(const RenderConfig& r, const SceneContent& c, const std::s
       << "#declare Ground_Level = " << c.ground << ";\n"
       << "#declare Water_Width = " << c.water_width << ";  // across a 2D run's fall (0 in 3D)\n"
       << "#declare Bank_Level = " << r.bank_level << ";\n"
+      << "#declare Bank_Width = " << r.bank_width << ";\n"
       << "#declare Wall_Count = " << c.walls.size() << ";\n";
   if (!c.walls.empty()) {
     out << "#declare Wall_Min = array[" << c.walls.size() << "] {";

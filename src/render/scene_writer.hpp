@@ -1,7 +1,7 @@
 // One POV-Ray 3.7 scene per frame (section 4: scenes are generated from the simulation output, no hand work).
 // The scene file holds only what the frame and the case give: the camera, the numbers the scenery is built from
-// (`#declare`d: Frame_Time, Up, Sun_Location, Scene_Min/Max, Ground_Level, Water_Width, Bank_Level and the wall
-// boxes Wall_Min/Wall_Max/Wall_Name), the water mesh, droplets and bubbles, and the volumes (df3 files with
+// (`#declare`d: Frame_Time, Up, Sun_Location, Scene_Min/Max, Ground_Level, Water_Width, Bank_Level, Bank_Width and
+// the wall boxes Wall_Min/Wall_Max/Wall_Name), the water mesh, droplets and bubbles, and the volumes (df3 files with
 // their boxes and extinction). Everything that makes the look is in editable include files installed into the
 // run's render folder (materials.hpp): materials.inc (water, white water, mist, droplets, bubbles) and the style's
 // scenery, natural.inc (sky, sun, haze, rock, basin) or lab.inc (the grey flume on a checkerboard).
