@@ -31,7 +31,7 @@ demo: build
 	@cp $(OUT)/render/*.mp4 $(OUT)/waterfall.mp4
 	@cp $(OUT)/render/*.gif $(OUT)/waterfall.gif
 	@scripts/contact_sheet.sh $(OUT) $(OUT)/contact_sheet.png "7.6:t/T = 76/85" "7.7:t/T = 77/85" "8.5:t/T = 85/85"
-	@echo "demo: $(OUT)/waterfall.mp4, .gif and contact_sheet.png, frames in $(OUT)/render/png, particles in $(OUT)/frames (frames.pvd for ParaView)"
+	@echo "demo: $(OUT)/waterfall.mp4, .gif and (when the run reached 8.5 s) contact_sheet.png, frames in $(OUT)/render/png, particles in $(OUT)/frames (frames.pvd for ParaView)"
 
 # The whole pipeline on the default case: simulate, render (mistfall run; the dam break writes no flow fields, so
 # the texture stage is skipped). About 7 minutes on 2 cores, 0.7 GB of meshes and images in out/demo-render.

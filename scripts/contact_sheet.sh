@@ -10,6 +10,7 @@ run=$1
 out=$2
 shift 2
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+look="x=12:y=h-34:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.45:boxborderw=6"
 inputs=()
 filters=""
 n=0
@@ -28,7 +29,7 @@ for spec in "$@"; do
   fi
   inputs+=(-i "$image")
   if [ -f "$font" ]; then
-    filters+="[$n:v]drawtext=fontfile=$font:text='$label':x=12:y=h-34:fontsize=22:fontcolor=white:box=1:boxcolor=black@0.45:boxborderw=6[v$n];"
+    filters+="[$n:v]drawtext=fontfile=$font:text='$label':$look[v$n];"
   else
     filters+="[$n:v]null[v$n];"
   fi

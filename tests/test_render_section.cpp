@@ -101,7 +101,8 @@ TEST(RenderSection, ExtrusionIsClosedFacesOutAndHoldsAreaTimesWidth) {
     EXPECT_NEAR(enclosedVolume(mesh) / (sectionArea(s) * 0.1), 1.0, 0.02) << "variation " << variation;
     const Vec<3> centre(0.1, 0.05, 0.0);
     int inward = 0;
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) inward += mesh.normals[i].dot(mesh.vertices[i] - centre) <= 0;
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+      inward += mesh.normals[i].dot(mesh.vertices[i] - centre) <= 0;
     EXPECT_EQ(inward, 0);
   }
 }

@@ -141,7 +141,8 @@ TEST(RenderVolume, MistMakesTheCloudBrighterThanTheSameFrameWithout) {
         << test_support::slurp(dir / "povray.log");
   }
   // The cloud is at the centre of the view (about 12 pixels across); a corner is the ground far from it.
-  const double with = meanGrey(dir / "with.ppm", 28, 36, 20, 28), without = meanGrey(dir / "without.ppm", 28, 36, 20, 28);
+  const double with = meanGrey(dir / "with.ppm", 28, 36, 20, 28);
+  const double without = meanGrey(dir / "without.ppm", 28, 36, 20, 28);
   EXPECT_GT(with, without + 0.1) << "with mist " << with << ", without " << without;
   EXPECT_NEAR(meanGrey(dir / "with.ppm", 0, 6, 0, 6), meanGrey(dir / "without.ppm", 0, 6, 0, 6), 0.02);
 }

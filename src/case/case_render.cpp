@@ -42,7 +42,8 @@ void defaultView(const CaseConfig& c, RenderConfig& r) {
   if (r.style == RenderStyle::Natural) {  // from higher up: the water sits in a basin below the banks
     r.camera_location[up] += 0.5 * extent;
     const double a = 35.0 * M_PI / 180.0;
-    const double dx = r.camera_location[0] - r.camera_look_at[0], dd = r.camera_location[depth] - r.camera_look_at[depth];
+    const double dx = r.camera_location[0] - r.camera_look_at[0];
+    const double dd = r.camera_location[depth] - r.camera_look_at[depth];
     r.camera_location[0] = r.camera_look_at[0] + std::cos(a) * dx + std::sin(a) * std::abs(dd);
     r.camera_location[depth] = r.camera_look_at[depth] + std::cos(a) * dd - toward_camera * std::sin(a) * dx;
   }
@@ -96,13 +97,14 @@ void readRender(const Reader& rd, const toml::table& root, CaseConfig& c) {
   r.mist_voxel = l0;
   r.frame_interval = c.output.interval;
   r.bank_level = defaultBankLevel(c);
-  r.bank_width = 0.5 * std::max(c.domain.max[0] - c.domain.min[0], c.domain.max[c.dimension - 1] - c.domain.min[c.dimension - 1]);
+  const int up = c.dimension - 1;
+  r.bank_width = 0.5 * std::max(c.domain.max[0] - c.domain.min[0], c.domain.max[up] - c.domain.min[up]);
   const toml::table& t = rd.table(root, "", p);
   rd.checkKeys(t, p,
                {"style", "camera_location", "camera_look_at", "camera_angle", "light_location", "image_width",
                 "image_height", "preview_width", "preview_height", "antialias", "frame_interval", "extrusion_width",
-                "sheet_variation", "variation_length", "hidden_regions", "bank_level", "bank_width", "frame_rate", "mist",
-                "mist_voxel", "white_water", "white_water_bubble_diameter", "mist_radius", "micro_bubble_radius"});
+                "sheet_variation", "variation_length", "hidden_regions", "bank_level", "bank_width", "frame_rate",
+                "mist", "mist_voxel", "white_water", "white_water_bubble_diameter", "mist_radius", "micro_bubble_radius"});
   if (int s = rd.choice(t, p, "style", {"natural", "lab"}); s >= 0) r.style = static_cast<RenderStyle>(s);
   rd.number(t, p, "camera_angle", {0.0, 180.0, true, true}, r.camera_angle);
   rd.integer(t, p, "image_width", 16, 8192, "[16, 8192]", r.image_width);

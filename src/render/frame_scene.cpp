@@ -116,9 +116,9 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
       if (isDroplet(static_cast<int>(k))) ++droplets_in[root(static_cast<int>(k))];
     for (const SectionLink& link : links) {
       const std::size_t a = liquid[link.from], b = liquid[link.to];
-      if (categoryOf(a) == Category::LiquidBulk && categoryOf(b) == Category::LiquidBulk) continue;
+      // Links join droplets: between two particles of the water's body or surface they would bridge troughs.
       const int drop = isDroplet(link.from) ? link.from : isDroplet(link.to) ? link.to : -1;
-      if (drop >= 0 && droplets_in[root(drop)] < kMinSheetDroplets) continue;
+      if (drop < 0 || droplets_in[root(drop)] < kMinSheetDroplets) continue;
       in_sheet[a] = in_sheet[b] = 1;
       s.links.push_back(link);
     }

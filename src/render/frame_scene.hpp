@@ -1,8 +1,8 @@
 // What one frame puts into its scene (docs/render.md):
 //  * water: the fluid liquid particles except droplets (category 3) when the frame is classified: a 2D frame's
 //    section (section_mesh.hpp, extruded across render.extrusion_width) with the links of its jets
-//    (jet_links.hpp; a chain of 6 or more linked droplets is a sheet: its links' capsules draw it; shorter
-//    chains are spray, drawn as droplets), a 3D frame's centres
+//    (jet_links.hpp; only links with a droplet at one end at least; a chain of 6 or more linked droplets is a
+//    sheet: its links' capsules draw it; shorter chains are spray, drawn as droplets), a 3D frame's centres
 //    (surface_mesh.hpp);
 //  * air in the water, for the white water: gas particles the solver marked enclosed in liquid and bubbles
 //    (category 6); foam: liquid surface particles (category 2) within 1.5 l0 of such air; and the texture's

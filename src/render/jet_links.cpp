@@ -14,7 +14,8 @@ std::vector<SectionLink> jetLinks(const std::vector<Vec<2>>& x, const std::vecto
   if (x.size() != u.size()) throw std::invalid_argument("jetLinks: positions and velocities differ in number");
   const double reach = p.max_length * p.spacing, cos_max = std::cos(p.max_angle * M_PI / 180.0);
   auto key = [reach](const Vec<2>& v) {
-    const auto i = static_cast<std::int64_t>(std::floor(v.x() / reach)), j = static_cast<std::int64_t>(std::floor(v.y() / reach));
+    const auto i = static_cast<std::int64_t>(std::floor(v.x() / reach));
+    const auto j = static_cast<std::int64_t>(std::floor(v.y() / reach));
     return (i << 32) ^ (j & 0xffffffff);
   };
   std::unordered_map<std::int64_t, std::vector<int>> cells;

@@ -210,7 +210,8 @@ SectionMesh marchingSquares(const SectionField& f) {
       const int n = static_cast<int>(poly.size());
       for (int k = 1; k + 1 < n; ++k) m.triangles.push_back({poly[0].id, poly[k].id, poly[k + 1].id});
       for (int k = 0; k < n; ++k)
-        if (poly[k].is_crossing && poly[(k + 1) % n].is_crossing) m.outline.push_back({poly[k].id, poly[(k + 1) % n].id});
+        if (poly[k].is_crossing && poly[(k + 1) % n].is_crossing)
+          m.outline.push_back({poly[k].id, poly[(k + 1) % n].id});
     }
   return m;
 }
