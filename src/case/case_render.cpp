@@ -104,7 +104,8 @@ void readRender(const Reader& rd, const toml::table& root, CaseConfig& c) {
                {"style", "camera_location", "camera_look_at", "camera_angle", "light_location", "image_width",
                 "image_height", "preview_width", "preview_height", "antialias", "frame_interval", "extrusion_width",
                 "sheet_variation", "variation_length", "hidden_regions", "bank_level", "bank_width", "frame_rate",
-                "mist", "mist_voxel", "white_water", "white_water_bubble_diameter", "mist_radius", "micro_bubble_radius"});
+                "mist", "mist_voxel", "white_water", "white_water_bubble_diameter", "mist_radius",
+                "micro_bubble_radius"});
   if (int s = rd.choice(t, p, "style", {"natural", "lab"}); s >= 0) r.style = static_cast<RenderStyle>(s);
   rd.number(t, p, "camera_angle", {0.0, 180.0, true, true}, r.camera_angle);
   rd.integer(t, p, "image_width", 16, 8192, "[16, 8192]", r.image_width);
