@@ -1,8 +1,9 @@
-// Render seconds per frame: the first frame of cases/dam_break.toml (2D, 1,250 water particles extruded across
-// render.extrusion_width = 0.1 m) and cases/dam_break_3d.toml (3D, 2,000 water particles), each meshed (OpenVDB)
-// and rendered by povray with one thread at the preview size (192 x 144) and the full size (640 x 480,
-// antialiased), as `mistfall render` does. Counters: meshing seconds, povray seconds, triangles, and the mesh's
-// volume error against count * l0^3 (2D: the count of the extruded layers). Skipped when povray is not installed.
+// Render seconds per frame: the first frame of cases/dam_break.toml (2D, 1,250 water particles: the section meshed
+// and extruded across render.extrusion_width = 0.1 m) and cases/dam_break_3d.toml (3D, 2,000 water particles,
+// OpenVDB), each rendered by povray with one thread at the preview size (192 x 144) and the full size (640 x 480,
+// antialiased), in the natural style, as `mistfall render` does. Counters: meshing seconds, povray seconds,
+// triangles, and the mesh's volume error against count * l0^D (2D: times the extrusion width). Skipped when povray
+// is not installed.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "render/frame_scene.hpp"
 #include "render/materials.hpp"
 #include "render/mesh_files.hpp"
+#include "render/section_mesh.hpp"
 
 using namespace mistfall;
 namespace fs = std::filesystem;
@@ -40,11 +42,22 @@ void renderFrame(benchmark::State& bench, const char* case_file, bool preview) {
   for (auto _ : bench) {
     FrameScene scene = frameScene<D>(p, {}, c, nullptr);
     auto start = std::chrono::steady_clock::now();
-    const TriangleMesh mesh = liquidSurface(scene.liquid, {c.numerics.particle_spacing});
+    const double l0 = c.numerics.particle_spacing;
+    TriangleMesh mesh;
+    double expected = 0.0;
+    if constexpr (D == 2) {
+      ExtrusionParameters e;
+      e.width = c.render.extrusion_width;
+      e.variation = c.render.sheet_variation;
+      e.bevel = 0.25 * l0;
+      mesh = extrudeSection(marchingSquares(sectionField(scene.section, {l0}, scene.links)), e);
+      expected = scene.section.size() * l0 * l0 * e.width;
+    } else {
+      mesh = liquidSurface(scene.liquid, {l0});
+      expected = scene.liquid.size() * std::pow(l0, 3);
+    }
     mesh_s += secondsSince(start);
     triangles = mesh.triangles.size();
-    const double l0 = c.numerics.particle_spacing;
-    const double expected = scene.liquid.size() * std::pow(l0, 3);  // 2D: the extruded layers are l0 apart
     volume_error = enclosedVolume(mesh) / expected - 1.0;
     writePovMesh(dir / "mesh.inc", mesh, "Water_Surface");
     scene.content.mesh_include = "mesh.inc";
@@ -52,8 +65,8 @@ void renderFrame(benchmark::State& bench, const char* case_file, bool preview) {
     const int w = preview ? c.render.preview_width : c.render.image_width;
     const int h = preview ? c.render.preview_height : c.render.image_height;
     std::vector<std::string> cmd{"povray", "-D", "+FN", "+WT1", "+Iscene.pov", "+Oimage.png",
-                                 "+W" + std::to_string(w), "+H" + std::to_string(h), "+Q8"};
-    if (!preview) cmd.push_back("+A0.2");
+                                 "+W" + std::to_string(w), "+H" + std::to_string(h), "+Q9"};
+    if (!preview) cmd.push_back("+A" + std::to_string(c.render.antialias));
     start = std::chrono::steady_clock::now();
     if (!runProcess(cmd, dir, dir / "povray.log")) bench.SkipWithError("povray failed; see /tmp/mistfall_bench_render");
     povray_s += secondsSince(start);

@@ -2,7 +2,7 @@
 # Installs every Debian package mistfall needs. Quick when all are present.
 # Usage: scripts/install-deps.sh
 # The render stage's packages are always installed: OpenVDB is needed to build (src/render/surface_mesh.cpp) and
-# the tests of `mistfall render` run povray and ffmpeg.
+# the tests of `mistfall render` run povray and ffmpeg; scripts/contact_sheet.sh labels images in the DejaVu font.
 set -euo pipefail
 
 packages=(
@@ -11,7 +11,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   python3 python3-numpy python3-matplotlib
-  libopenvdb-dev povray ffmpeg
+  libopenvdb-dev povray ffmpeg fonts-dejavu-core
 )
 
 missing=()

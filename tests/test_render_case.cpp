@@ -50,3 +50,32 @@ TEST(RenderCase, BadValuesNameTheKeyAndTheRange) {
   EXPECT_HAS(with("camera_location = [0.5, 0.5, 0.0]\n"), "render.camera_look_at");
   EXPECT_HAS(with("colour = 1\n"), "render.colour");
 }
+
+TEST(RenderCase, StyleVolumesAndFramesHaveDefaultsAndChecks) {
+  Parts p;
+  const CaseConfig c = parseCase(p.text(), "x.toml");
+  EXPECT_EQ(c.render.style, RenderStyle::Natural);
+  EXPECT_DOUBLE_EQ(c.render.frame_interval, c.output.interval);
+  EXPECT_DOUBLE_EQ(c.render.mist_voxel, c.numerics.particle_spacing);
+  EXPECT_DOUBLE_EQ(c.render.sheet_variation, 0.3 * c.numerics.particle_spacing);
+  EXPECT_TRUE(c.render.mist);
+  EXPECT_TRUE(c.render.white_water);
+  EXPECT_TRUE(c.render.hidden_regions.empty());
+  EXPECT_DOUBLE_EQ(c.render.bank_width, 0.5);  // half the domain's larger extent
+  p.output += "[render]\nstyle = \"lab\"\nframe_interval = 0.1\nmist = false\nsheet_variation = 0\n";
+  const RenderConfig r = parseCase(p.text(), "x.toml").render;
+  EXPECT_EQ(r.style, RenderStyle::Lab);
+  EXPECT_DOUBLE_EQ(r.frame_interval, 0.1);
+  EXPECT_FALSE(r.mist);
+  auto with = [](const std::string& table) {
+    Parts q;
+    q.output += "[render]\n" + table;
+    return errorOf(q.text());
+  };
+  EXPECT_HAS(with("style = \"photo\"\n"), "render.style");
+  EXPECT_HAS(with("hiden_regions = []\n"), "did you mean 'hidden_regions'");
+  EXPECT_HAS(with("mist_voxl = 0.01\n"), "did you mean 'mist_voxel'");
+  EXPECT_HAS(with("hidden_regions = [\"lid\"]\n"), "not a wall region");
+  EXPECT_HAS(with("hidden_regions = \"lid\"\n"), "render.hidden_regions");
+  EXPECT_HAS(with("frame_interval = 0\n"), "render.frame_interval");
+}

@@ -89,22 +89,20 @@ class ScopedPath {
 TEST(RenderCommand, PreviewWritesMeshesScenesImagesAndAnimation) {
   ASSERT_TRUE(findOnPath("povray") && findOnPath("ffmpeg")) << "scripts/install-deps.sh installs povray and ffmpeg";
   const fs::path run = makeRun("render_command");
-  const auto r = runCli("render " + quoted(run) + " --preview --jobs 2 --plain-progress");
+  const auto r = runCli("render " + quoted(run) + " --preview --jobs 2 --export --plain-progress");
   ASSERT_EQ(r.code, 0) << r.err;
   const fs::path out = run / "render";
-  for (const char* f : {"materials.inc", "scene_00000.pov", "scene_00001.pov", "mesh_00000.inc", "mesh_00001.ply",
+  for (const char* f : {"materials.inc", "natural.inc", "lab.inc", "export/water_00000.ply", "export/water_00001.ply",
                         "preview/frame_00000.png", "preview/frame_00001.png", "preview/tiny_block.mp4",
-                        "preview/tiny_block.gif"})
+                        "preview/tiny_block.gif", "timings.csv"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
-  EXPECT_FALSE(fs::exists(out / "preview/tmp_frame_00000.png"));
-  const TriangleMesh mesh = readPly(out / "mesh_00000.ply");
+  // The intermediates are gone once the images are done.
+  for (const char* f : {"scene_00000.pov", "mesh_00000.inc", "scene_00001.pov", "preview/tmp_frame_00000.png"})
+    EXPECT_FALSE(fs::exists(out / f)) << f;
+  const TriangleMesh mesh = readPly(out / "export/water_00000.ply");
   EXPECT_EQ(openEdgeCount(mesh), 0u);
-  // 100 particles of 1 cm^2 extruded across 5 cm; the droplet is a sphere of the scene, not part of the mesh.
+  // The section of 100 particles of 1 cm^2 extruded across 5 cm; the droplet is a sphere, not part of the mesh.
   EXPECT_NEAR(enclosedVolume(mesh) / (100 * kL0 * kL0 * 0.05), 1.0, 0.05);
-  const std::string scene = slurp(out / "scene_00001.pov");
-  EXPECT_NE(scene.find("#include \"mesh_00001.inc\""), std::string::npos);
-  EXPECT_NE(scene.find("// droplets: 1"), std::string::npos);
-  EXPECT_NE(scene.find("box {"), std::string::npos);  // the floor
 
   // Again: both frames are skipped, the animation is rebuilt; an edited materials.inc is kept.
   std::ofstream(out / "materials.inc", std::ios::app) << "// edited\n";
@@ -112,6 +110,29 @@ TEST(RenderCommand, PreviewWritesMeshesScenesImagesAndAnimation) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.err.find("2 of 2 frames already rendered"), std::string::npos) << again.err;
   EXPECT_NE(slurp(out / "materials.inc").find("// edited"), std::string::npos);
+
+  // Rendered anew with --keep-intermediates: the scene, the mesh include stay.
+  fs::remove_all(out / "preview");
+  const auto kept = runCli("render " + quoted(run) + " --preview --keep-intermediates --plain-progress");
+  ASSERT_EQ(kept.code, 0) << kept.err;
+  EXPECT_TRUE(fs::exists(out / "mesh_00001.inc"));
+  const std::string scene = slurp(out / "scene_00001.pov");
+  EXPECT_NE(scene.find("#include \"mesh_00001.inc\""), std::string::npos);
+  EXPECT_NE(scene.find("// droplets: 1"), std::string::npos);
+  EXPECT_NE(scene.find("#declare Wall_Count = 1;"), std::string::npos);  // the floor
+}
+
+TEST(RenderCommand, FrameIntervalPicksTheFramesNearestToItsMultiples) {
+  ASSERT_TRUE(findOnPath("povray") && findOnPath("ffmpeg")) << "scripts/install-deps.sh installs povray and ffmpeg";
+  const fs::path run = makeRun("render_interval");  // frames 0 and 1, 0.01 s apart
+  std::string text = slurp(run / "case.toml");
+  text.replace(text.find("[render]\n"), 9, "[render]\nframe_interval = 0.02\n");
+  std::ofstream(run / "case.toml") << text;
+  const auto r = runCli("render " + quoted(run) + " --preview --plain-progress");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(run / "render/preview/frame_00000.png"));
+  EXPECT_FALSE(fs::exists(run / "render/preview/frame_00001.png"));
+  EXPECT_FALSE(fs::exists(run / "render/export"));
 }
 
 TEST(RenderCommand, MissingPovrayOrFfmpegNamesThePackageAndWritesNothing) {

@@ -75,6 +75,7 @@ TEST(RenderScene, TinyRenderShowsTheWaterAgainstTheBackground) {
   writePovMesh(dir / "mesh.inc", liquidSurface(centres, {0.02}), "Water_Surface");
   ASSERT_TRUE(installMaterials(dir));
   RenderConfig r;
+  r.style = RenderStyle::Lab;  // a uniform background
   r.camera_location = {0.0, 0.15, 1.2};
   r.camera_look_at = {0.0, 0.0, 0.0};
   r.camera_angle = 30.0;
@@ -111,12 +112,24 @@ TEST(RenderScene, SceneHasCameraLightMaterialsAndOnlyNonEmptyGroups) {
   c.droplet_radius = 0.005;
   const std::string text = sceneText(r, c, "t");
   EXPECT_NE(text.find("#include \"materials.inc\""), std::string::npos);
-  EXPECT_NE(text.find("sky <0, 0, 1>"), std::string::npos);
+  EXPECT_NE(text.find("#declare Up = <0, 0, 1>;"), std::string::npos);
+  EXPECT_NE(text.find("sky Up"), std::string::npos);
+  EXPECT_NE(text.find("#include \"natural.inc\""), std::string::npos);  // the default style
   EXPECT_NE(text.find("right -x"), std::string::npos);
   EXPECT_NE(text.find("material { M_Droplet }"), std::string::npos);
   EXPECT_EQ(text.find("M_Bubble"), std::string::npos);
-  EXPECT_EQ(text.find("Water_Surface"), std::string::npos);
+  EXPECT_EQ(text.find("Water("), std::string::npos);
+  EXPECT_EQ(text.find("Mist()"), std::string::npos);
   EXPECT_NE(defaultMaterials().find("ior 1.33"), std::string::npos);
+  r.style = RenderStyle::Lab;
+  c.mesh_include = "mesh.inc";
+  c.mist_volume = VolumeFile{"mist_00001.df3", Vec<3>::Zero(), Vec<3>::Ones(), 40.0};
+  const std::string lab = sceneText(r, c, "t");
+  EXPECT_NE(lab.find("#include \"lab.inc\""), std::string::npos);
+  EXPECT_NE(lab.find("Water(false)"), std::string::npos);
+  EXPECT_NE(lab.find("#declare Mist_File = \"mist_00001.df3\";"), std::string::npos);
+  EXPECT_NE(lab.find("#declare Mist_Extinction = 40;"), std::string::npos);
+  EXPECT_NE(lab.find("Mist()"), std::string::npos);
 }
 
 TEST(RenderScene, WallsOnTheLineOfSightAreCutAwayAndDropletsLeaveTheMesh) {

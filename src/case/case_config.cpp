@@ -22,4 +22,6 @@ const char* toString(PressureSolverKind k) {
   return "?";
 }
 
+const char* toString(RenderStyle s) { return s == RenderStyle::Natural ? "natural" : "lab"; }
+
 }  // namespace mistfall

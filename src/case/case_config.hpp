@@ -177,17 +177,34 @@ struct TextureConfig {
 // The render stage (`mistfall render`, src/render). Positions are in the simulation's coordinates (a 2D run's
 // third coordinate is across its extrusion, z in [-extrusion_width/2, extrusion_width/2]). The parser fills in
 // every default (docs/case-file.md), so all fields hold the values used.
+enum class RenderStyle { Natural, Lab };
+
 struct RenderConfig {
+  RenderStyle style = RenderStyle::Natural;  // scenery: render/natural.inc or render/lab.inc
   std::array<double, 3> camera_location{0.0, 0.0, 0.0};
   std::array<double, 3> camera_look_at{0.0, 0.0, 0.0};
   double camera_angle = 40.0;                // horizontal field of view [deg]
-  std::array<double, 3> light_location{0.0, 0.0, 0.0};
+  std::array<double, 3> light_location{0.0, 0.0, 0.0};  // the sun (natural) or a point light (lab)
   int image_width = 640, image_height = 480;
   int preview_width = 192, preview_height = 144;
+  double antialias = 0.3;                    // povray +A threshold at full size; 0: none
+  double frame_interval = 0.0;               // [s] render the frames nearest to multiples of this; default
+                                             // output.interval (every frame)
   double extrusion_width = 0.0;              // [m] a 2D run's water is extruded across this; default texture.width
+  double sheet_variation = 0.0;              // [m] across-fall variation of a 2D run's outline; default 0.3 l0
+  double variation_length = 0.0;             // [m] its length along the section; default 5 l0
+  std::vector<std::string> hidden_regions;   // wall regions not drawn (a closed box's lid, an inflow gate)
+  double bank_level = 0.0;                   // [m] top of the basin's banks (natural); default: lowest water
+                                             // region's top + 2 l0
+  double bank_width = 0.0;                   // [m] natural, 2D: rock beside the water across the fall; default
+                                             // half the domain's larger extent
   double frame_rate = 25.0;                  // frames per second of the MP4 and GIF
-  double mist_radius = 0.0;                  // [m] drawn radius of a mist representative; default l0 / 4
-  double micro_bubble_radius = 0.0;          // [m] drawn radius of a micro-bubble representative; default l0 / 4
+  bool mist = true;                          // mist representatives as a participating medium (lab: spheres)
+  double mist_voxel = 0.0;                   // [m] voxel of the mist's density grid; default l0
+  bool white_water = true;                   // aerated water as scattering media inside the water
+  double white_water_bubble_diameter = 2e-3;  // [m] bubble size of the air the MPS run resolves in the water
+  double mist_radius = 0.0;                  // [m] lab style: drawn radius of a mist representative; default l0/4
+  double micro_bubble_radius = 0.0;          // [m] lab style: drawn radius of a micro-bubble; default l0 / 4
 };
 
 struct CaseConfig {
@@ -206,5 +223,6 @@ struct CaseConfig {
 };
 
 const char* toString(PressureSolverKind k);
+const char* toString(RenderStyle s);
 
 }  // namespace mistfall

@@ -80,19 +80,28 @@ int main(int argc, char** argv) {
 
   mistfall::RenderOptions ren;
   auto* render = app.add_subcommand(
-      "render", "Render a run with POV-Ray: water surface meshes (.inc mesh2, .ply), one scene per frame, images "
-                "(povray, in parallel) and an animation (ffmpeg: RUN_DIR/render/<case>.mp4 and .gif)");
+      "render", "Render a run with POV-Ray: water surface meshes, mist and white water as media, one scene per "
+                "frame, images (povray, in parallel) and an animation (ffmpeg: RUN_DIR/render/<case>.mp4 and .gif)");
   render->footer(
-      "Reads RUN_DIR/case.toml ([render]: camera, light, image sizes; docs/case-file.md), the frames, their\n"
-      "category array (droplets, bubbles) and RUN_DIR/texture/texture_NNNNN.bin (mist, micro-bubbles) when present.\n"
-      "Writes RUN_DIR/render/: materials.inc (once; edit it to restyle), mesh_NNNNN.inc/.ply, scene_NNNNN.pov,\n"
-      "png/frame_NNNNN.png (preview/ with --preview), log/ and the animation. Frames whose image is newer than\n"
-      "the frame, its texture file and case.toml are skipped. Needs the Debian packages povray and ffmpeg.\n" +
+      "Reads RUN_DIR/case.toml ([render]: style, camera, sun, sizes, frame_interval; docs/case-file.md), the\n"
+      "frames, their category array and RUN_DIR/texture/texture_NNNNN.bin (mist, micro-bubbles) when present.\n"
+      "Writes RUN_DIR/render/: materials.inc, natural.inc, lab.inc (once; edit them to restyle), per frame\n"
+      "mesh_NNNNN.inc, mist_/white_NNNNN.df3 and scene_NNNNN.pov (deleted once the image is done unless\n"
+      "--keep-intermediates), png/frame_NNNNN.png (preview/ with --preview), with --export export/water_NNNNN.ply\n"
+      "and export/volumes_NNNNN.vdb, log/, timings.csv and the animation. Frames whose image is newer than the\n"
+      "frame, its texture file and case.toml are skipped. Needs the Debian packages povray and ffmpeg\n"
+      "(docs/render.md).\n" +
       std::string(mistfall::kExitCodeContract));
   render->add_option("run_dir", ren.run_dir, "Run directory written by `mistfall simulate`")->required();
   render->add_flag("--preview", ren.preview, "Small images (render.preview_width x preview_height), no antialiasing");
   render->add_option("--jobs,-j", ren.jobs, "povray processes at once (default: the number of cores)")
       ->check(CLI::Range(1, 4096));
+  render->add_option("--povray-threads", ren.povray_threads, "Render threads of each povray process (default 1)")
+      ->check(CLI::Range(1, 4096));
+  render->add_flag("--keep-intermediates", ren.keep_intermediates,
+                   "Keep each frame's scene, mesh include and density files after its image is done");
+  render->add_flag("--export", ren.export_files,
+                   "Also write export/water_NNNNN.ply and export/volumes_NNNNN.vdb (Blender, Houdini; docs/render.md)");
   render->add_flag("--plain-progress", ren.force_plain_progress, "Log progress lines instead of a progress bar");
 
   mistfall::RunOptions pipe;
@@ -109,6 +118,8 @@ int main(int argc, char** argv) {
   run->add_option("--jobs,-j", pipe.jobs, "povray processes at once (default: the number of cores)")
       ->check(CLI::Range(1, 4096));
   run->add_flag("--preview", pipe.preview, "Render small preview images (see `render --help`)");
+  run->add_flag("--keep-intermediates", pipe.keep_intermediates, "Keep the render's scenes, meshes and densities");
+  run->add_flag("--export", pipe.export_files, "Render: also write the PLY meshes and OpenVDB volumes");
   run->add_flag("--overwrite", pipe.overwrite, "Replace the contents of an existing run directory");
   run->add_flag("--plain-progress", pipe.force_plain_progress, "Log progress lines instead of progress bars");
   run->footer(std::string("Stops at the first stage that fails, with its exit code.\n") + mistfall::kExitCodeContract);

@@ -45,6 +45,8 @@ int pipeline(const RunOptions& o) {
   RenderOptions ren;
   ren.run_dir = o.out_dir;
   ren.preview = o.preview;
+  ren.keep_intermediates = o.keep_intermediates;
+  ren.export_files = o.export_files;
   ren.jobs = o.jobs;
   ren.force_plain_progress = o.force_plain_progress;
   return runRender(ren);

@@ -14,6 +14,8 @@ struct RunOptions {
   int threads = 0;                    // simulate and texture: OpenMP threads (0: default)
   int jobs = 0;                       // render: povray processes (0: the number of cores)
   bool preview = false;               // render: preview images
+  bool keep_intermediates = false;    // render: keep scenes, meshes and densities
+  bool export_files = false;          // render: PLY meshes and OpenVDB volumes
   bool overwrite = false;             // simulate and texture: replace an earlier run
   bool force_plain_progress = false;
 };

@@ -2,6 +2,7 @@
 #include "render/frame_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "classify/classification.hpp"
@@ -10,6 +11,9 @@
 namespace mistfall {
 
 namespace {
+
+constexpr int kMinSheetDroplets = 6;  // droplets in a linked chain that make it a sheet
+constexpr double kFoamReach = 1.5;    // [l0] a surface particle this close to air in the water is foam
 
 template <int D>
 Vec<3> padded(const Vec<D>& x) {
@@ -40,7 +44,7 @@ bool segmentHitsBox(const std::array<double, 3>& from, const std::array<double, 
 
 template <int D>
 FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& category, const CaseConfig& config,
-                      const TextureSnapshot* texture) {
+                      const TextureSnapshot* texture, double time) {
   if (!category.empty() && category.size() != p.size())
     throw std::runtime_error("the category array has " + std::to_string(category.size()) + " values for " +
                              std::to_string(p.size()) + " particles");
@@ -49,40 +53,126 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
   FrameScene s;
   SceneContent& c = s.content;
   c.up_axis = D - 1;
+  c.time = time;
   c.ground = config.domain.min[D - 1];
+  c.scene_box = config.domain;
+  if (D == 2) {
+    c.water_width = r.extrusion_width;
+    c.scene_box.min[2] = -0.5 * r.extrusion_width, c.scene_box.max[2] = 0.5 * r.extrusion_width;
+  }
   c.droplet_radius = c.bubble_radius = 0.5 * l0;
   c.mist_radius = r.mist_radius;
   c.micro_bubble_radius = r.micro_bubble_radius;
-  std::vector<Vec<D>> liquid;
+  std::vector<std::size_t> liquid;  // fluid liquid particles
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
     const auto cat = category.empty() ? Category::None : static_cast<Category>(category[i]);
-    if (cat == Category::Droplet) c.droplets.push_back(padded<D>(p.position[i]));
-    else if (cat == Category::Bubble) c.bubbles.push_back(padded<D>(p.position[i]));
-    else if (p.phase[i] == Phase::Liquid) liquid.push_back(p.position[i]);
+    if (p.phase[i] == Phase::Liquid) {
+      liquid.push_back(i);
+    } else if (cat == Category::Bubble || p.enclosed[i]) {
+      if constexpr (D == 2) s.air_across.push_back(p.position[i]);
+      else s.air.push_back(p.position[i]);
+    }
+    if (cat == Category::Bubble && !texture) c.bubbles.push_back(padded<D>(p.position[i]));
   }
+  auto categoryOf = [&](std::size_t i) {
+    return category.empty() ? Category::None : static_cast<Category>(category[i]);
+  };
+  // Foam: liquid surface particles within kFoamReach l0 of air in the water (where the jet drags air under).
+  std::vector<Vec<D>> air_points;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas &&
+        (categoryOf(i) == Category::Bubble || p.enclosed[i]))
+      air_points.push_back(p.position[i]);
+  for (std::size_t i : liquid) {
+    if (categoryOf(i) != Category::LiquidSurface) continue;
+    for (const Vec<D>& a : air_points)
+      if ((a - p.position[i]).norm() < kFoamReach * l0) {
+        if constexpr (D == 2) s.foam_across.push_back(p.position[i]);
+        else s.foam.push_back(p.position[i]);
+        break;
+      }
+  }
+  std::vector<char> in_sheet(p.size(), 0);
   if constexpr (D == 2) {
-    s.liquid = extrudeAcross(liquid, l0, r.extrusion_width);
-  } else {
-    s.liquid = std::move(liquid);
+    std::vector<Vec<2>> x, u;
+    for (std::size_t i : liquid) x.push_back(p.position[i]), u.push_back(p.velocity[i]);
+    JetLinkParameters jp;
+    jp.spacing = l0;
+    std::vector<SectionLink> links = jetLinks(x, u, jp);
+    // Droplets joined by links into chains (union-find); only chains of kMinSheetDroplets droplets or more are a
+    // sheet: a short chain of spray extruded across the fall would be a plate of glass.
+    std::vector<int> parent(x.size());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
+    auto root = [&](int k) {
+      while (parent[k] != k) k = parent[k] = parent[parent[k]];
+      return k;
+    };
+    auto isDroplet = [&](int k) { return categoryOf(liquid[k]) == Category::Droplet; };
+    for (const SectionLink& link : links)
+      if (isDroplet(link.from) && isDroplet(link.to)) parent[root(link.from)] = root(link.to);
+    std::vector<int> droplets_in(x.size(), 0);
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (isDroplet(static_cast<int>(k))) ++droplets_in[root(static_cast<int>(k))];
+    for (const SectionLink& link : links) {
+      const std::size_t a = liquid[link.from], b = liquid[link.to];
+      // Links join droplets: between two particles of the water's body or surface they would bridge troughs.
+      const int drop = isDroplet(link.from) ? link.from : isDroplet(link.to) ? link.to : -1;
+      if (drop < 0 || droplets_in[root(drop)] < kMinSheetDroplets) continue;
+      in_sheet[a] = in_sheet[b] = 1;
+      s.links.push_back(link);
+    }
+  }
+  std::vector<Vec<3>> sources;  // the texture's droplet sources: a place across the fall for the frame's droplets
+  if (texture)
+    for (std::size_t i = 0; i < texture->position.size(); ++i)
+      if (texture->kind[i] == TextureKind::Droplet) sources.push_back(texture->position[i]);
+  for (std::size_t i : liquid) {
+    if (categoryOf(i) != Category::Droplet) {
+      if constexpr (D == 2) s.section.push_back(p.position[i]);
+      else s.liquid.push_back(p.position[i]);
+      continue;
+    }
+    if (in_sheet[i]) continue;  // drawn by its links' capsules, as thin as the sheet has become
+    Vec<3> x = padded<D>(p.position[i]);
+    if (D == 2) {
+      double best = 2.0 * l0;
+      for (const Vec<3>& q : sources)
+        if (const double d = std::hypot(q.x() - x.x(), q.y() - x.y()); d < best) best = d, x.z() = q.z();
+    }
+    c.droplets.push_back(x);
   }
   for (const Region& region : config.regions) {
     if (region.material != Material::Wall || region.shape != RegionShape::Box) continue;
+    if (std::find(r.hidden_regions.begin(), r.hidden_regions.end(), region.name) != r.hidden_regions.end()) continue;
     Box b = region.box;
     if (D == 2) b.min[2] = -0.5 * r.extrusion_width, b.max[2] = 0.5 * r.extrusion_width;
-    if (!segmentHitsBox(r.camera_location, r.camera_look_at, b)) c.walls.push_back(b);
+    Box drawn = b;  // natural style, 2D: the rock is widened across the fall by bank_width
+    if (D == 2 && r.style == RenderStyle::Natural) drawn.min[2] -= r.bank_width, drawn.max[2] += r.bank_width;
+    if (segmentHitsBox(r.camera_location, r.camera_look_at, drawn)) continue;
+    c.walls.push_back(b);
+    c.wall_names.push_back(region.name);
   }
   if (texture)
     for (std::size_t i = 0; i < texture->position.size(); ++i) {
-      if (texture->kind[i] == TextureKind::Mist) c.mist.push_back(texture->position[i]);
-      if (texture->kind[i] == TextureKind::MicroBubble) c.micro_bubbles.push_back(texture->position[i]);
+      const Vec3& x = texture->position[i];
+      switch (texture->kind[i]) {
+        case TextureKind::Mist: s.mist.push_back(x); break;
+        case TextureKind::MicroBubble: s.micro_bubbles.push_back(x); break;
+        case TextureKind::Droplet: break;  // the frame's droplets are drawn
+        case TextureKind::Bubble: c.bubbles.push_back(x); break;
+      }
     }
+  if (r.style == RenderStyle::Lab) {
+    if (r.mist) c.mist = s.mist;
+    c.micro_bubbles = s.micro_bubbles;
+  }
   return s;
 }
 
 template FrameScene frameScene<2>(const Particles<2>&, const std::vector<std::uint8_t>&, const CaseConfig&,
-                                  const TextureSnapshot*);
+                                  const TextureSnapshot*, double);
 template FrameScene frameScene<3>(const Particles<3>&, const std::vector<std::uint8_t>&, const CaseConfig&,
-                                  const TextureSnapshot*);
+                                  const TextureSnapshot*, double);
 
 }  // namespace mistfall
