@@ -65,7 +65,8 @@ void writeFields(const fs::path& file, double time) {
 
 // A classified 2D run: frame 0 a droplet and a bubble; frame 1 both moved on (same particles) and a new droplet;
 // frame 2 the first droplet again, the bubble rejoined the water, a new bubble.
-fs::path makeRun(const std::string& name, bool with_category = true, bool with_fields = true) {
+fs::path makeRun(const std::string& name, bool with_category = true, bool with_fields = true,
+                 const std::string& texture_extra = "") {
   const fs::path run = test_support::freshDir(name);
   fs::create_directories(run / "frames");
   fs::create_directories(run / "fields");
@@ -73,7 +74,8 @@ fs::path makeRun(const std::string& name, bool with_category = true, bool with_f
                                       "max = [1.0, 1.0]\n[numerics]\nparticle_spacing = 0.02\n[output]\n"
                                       "end_time = 0.1\ninterval = 0.05\nfield_spacing = 0.1\n[[region]]\nname = \"w\"\n"
                                       "min = [0.0, 0.0]\nmax = [1.0, 0.5]\n[texture]\nsource_lifetime = 0.05\n"
-                                      "representatives_per_source = 20\nwidth = 0.2\nseed = 5\n";
+                                      "representatives_per_source = 20\nwidth = 0.2\nseed = 5\n"
+                                   << texture_extra;
   const std::vector<std::vector<Point>> frames = {
       {{0.3, 0.8, 0.5, 0.0, 0, 3}, {0.6, 0.2, 0.0, 0.2, 1, 6}, {0.1, 0.1, 0.0, 0.0, 0, 1}},
       {{0.325, 0.8, 0.5, 0.0, 0, 3}, {0.6, 0.21, 0.0, 0.2, 1, 6}, {0.1, 0.1, 0.0, 0.0, 0, 1}, {0.8, 0.9, 0, 0, 0, 3}},
@@ -133,6 +135,26 @@ TEST(TextureCommand, SpawnsOncePerIsolatedParticleAndWritesEveryFrame) {
   PvdCollection pvd(run / "texture/texture.pvd");
   pvd.load();
   EXPECT_EQ(pvd.entries().size(), 3u);
+}
+
+// texture.file_interval and texture.vtp: the files of the frames nearest the multiples of 0.1 s only (frames 0 and
+// 2 of 0, 0.05, 0.1 s), no ParaView copies, the same cloud in them as with every file, and texture.csv whole.
+TEST(TextureCommand, FileIntervalAndVtpKeysWriteFewerFiles) {
+  const fs::path all = makeRun("texture_cli_all"), few = makeRun("texture_cli_few", true, true,
+                                                                 "file_interval = 0.1\nvtp = false\n");
+  ASSERT_EQ(runCli("texture " + quoted(all) + " --threads 1").code, 0);
+  const auto r = runCli("texture " + quoted(few) + " --threads 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(few / "texture/texture_00000.bin"));
+  EXPECT_FALSE(fs::exists(few / "texture/texture_00001.bin"));
+  EXPECT_TRUE(fs::exists(few / "texture/texture_00002.bin"));
+  for (int f = 0; f < 3; ++f) EXPECT_FALSE(fs::exists(few / ("texture/texture_0000" + std::to_string(f) + ".vtp")));
+  EXPECT_TRUE(test_support::slurp(all / "texture/texture_00002.bin") ==
+              test_support::slurp(few / "texture/texture_00002.bin"));
+  EXPECT_EQ(csvRows(few / "texture/texture.csv"), csvRows(all / "texture/texture.csv"));
+  PvdCollection pvd(few / "texture/texture.pvd");
+  pvd.load();
+  EXPECT_TRUE(pvd.entries().empty());
 }
 
 TEST(TextureCommand, SameCloudOnOneAndTwoThreads) {

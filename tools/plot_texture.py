@@ -14,7 +14,9 @@ snapshots, the matching RUN_DIR/frames/frame_NNNNN.vtp (the water, drawn behind)
 Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
 Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /usr/bin/python3.
 """
+import glob
 import os
+import struct
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -27,7 +29,40 @@ DROPLET, MIST, BUBBLE, MICRO_BUBBLE = 0, 1, 2, 3  # TextureKind in src/texture/t
 
 
 def read_texture_pvd(run_dir):
-    return read_pvd_file(os.path.join(run_dir, "texture", "texture.pvd"), f"run `mistfall texture {run_dir}` first")
+    """[(time, path)] of the texture's frames: the .vtp files texture.pvd lists or, when the run wrote none
+    ([texture] vtp = false), the texture_NNNNN.bin files."""
+    entries = []
+    try:
+        entries = read_pvd_file(os.path.join(run_dir, "texture", "texture.pvd"),
+                                f"run `mistfall texture {run_dir}` first")
+    except PlotError as e:
+        if "lists no frames" not in str(e):
+            raise
+    if entries:
+        return entries
+    bins = sorted(glob.glob(os.path.join(run_dir, "texture", "texture_*.bin")))
+    if not bins:
+        raise PlotError(f"{run_dir}/texture has no texture frames (.vtp or .bin)")
+    return [(read_texture_bin(b)[0], b) for b in bins]
+
+
+def read_texture_bin(path):
+    """(time, arrays with Points and kind) of a texture_NNNNN.bin (format: src/io/texture_files.hpp)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if len(data) < 32 or data[:8] != b"MFTEXTR1":
+        raise PlotError(f"unreadable texture file {path}: not a mistfall texture file")
+    time, n = struct.unpack_from("<dQ", data, 16)
+    need = 32 + n * (3 * 8 + 3 * 8 + 8 + 1 + 8)
+    if len(data) < need:
+        raise PlotError(f"unreadable texture file {path}: truncated ({len(data)} of {need} bytes)")
+    pos = np.frombuffer(data, "<f8", 3 * n, 32).reshape(-1, 3)
+    kind = np.frombuffer(data, np.uint8, n, 32 + n * 56)
+    return time, {"Points": pos, "kind": kind}
+
+
+def read_texture_frame(path):
+    return read_texture_bin(path)[1] if path.endswith(".bin") else read_vtp_arrays(path, "texture frame")[1]
 
 
 def extent_row(time, arrays):
@@ -63,7 +98,7 @@ def run(args):
     os.makedirs(out_dir, exist_ok=True)
     rows = []
     for time, path in entries:
-        _, arrays = read_vtp_arrays(path, "texture frame")
+        arrays = read_texture_frame(path)
         rows.append(extent_row(time, arrays))
     table = np.array(rows, dtype=float)
     header = "time,mist,micro_bubbles,mist_x05,mist_x95,mist_y50,mist_y95,micro_bubble_y50"
@@ -96,7 +131,7 @@ def run(args):
             time, path = entries[k]
         except (ValueError, IndexError):
             raise PlotError(f"--frames: no texture frame {spec!r} (there are {len(entries)})") from None
-        _, cloud = read_vtp_arrays(path, "texture frame")
+        cloud = read_texture_frame(path)
         fig, ax = plt.subplots(figsize=(8, 5))
         frame = os.path.join(args.run_dir, "frames", f"frame_{k:05d}.vtp")
         if os.path.isfile(frame):

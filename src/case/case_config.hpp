@@ -172,6 +172,8 @@ struct TextureConfig {
   double match_radius = 1.0;                 // [l0] isolated particles this close between frames are the same one
   double birth_grace = 0.02;                 // [s] a particle never yet in its carrying phase is kept this long
   bool run_inline = false;                   // key `inline`: simulate writes RUN_DIR/texture at every frame
+  double file_interval = 0.0;                // [s] texture files only at frames nearest its multiples; 0 = every frame
+  bool write_vtp = true;                     // key `vtp`: the ParaView copy texture_NNNNN.vtp beside each .bin
 };
 
 // The render stage (`mistfall render`, src/render). Positions are in the simulation's coordinates (a 2D run's

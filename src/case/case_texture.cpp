@@ -14,7 +14,7 @@ void readTexture(const Reader& rd, const toml::table& root, CaseConfig& c) {
   rd.checkKeys(t, p,
                {"seed", "fine_diameter", "representatives_per_source", "representative_ratio", "source_diameter",
                 "source_lifetime", "added_mass", "width", "fluctuation", "langevin_time_scale", "time_step",
-                "match_radius", "birth_grace", "inline"});
+                "match_radius", "birth_grace", "inline", "file_interval", "vtp"});
   rd.integer(t, p, "seed", 0, 2147483647, "[0, 2147483647]", x.seed);
   rd.number(t, p, "fine_diameter", {0.0, 1e-2, true, false}, x.fine_diameter);
   rd.integer(t, p, "representatives_per_source", 1, 1000000, "[1, 1000000]", x.representatives_per_source);
@@ -31,6 +31,8 @@ void readTexture(const Reader& rd, const toml::table& root, CaseConfig& c) {
   rd.number(t, p, "match_radius", {0.0, 10.0, true, false}, x.match_radius);
   rd.number(t, p, "birth_grace", {0.0, 10.0, false, false}, x.birth_grace);
   rd.boolean(t, p, "inline", x.run_inline);
+  rd.number(t, p, "file_interval", {0.0, c.output.end_time, false, false, "output.end_time"}, x.file_interval);
+  rd.boolean(t, p, "vtp", x.write_vtp);
   if (x.run_inline && !(c.output.field_spacing > 0.0))
     rd.fail("texture.inline = true needs the flow grids, but output.field_spacing = 0 writes none; allowed "
             "output.field_spacing > 0 (or texture.inline = false)");

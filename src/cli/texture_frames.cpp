@@ -1,6 +1,7 @@
 // TextureWriter and the saved frames of a run (see texture_frames.hpp).
 #include "cli/texture_frames.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <regex>
 
@@ -48,7 +49,13 @@ std::vector<std::uint8_t> readFrameCategory(const fs::path& frame, const fs::pat
 }
 
 TextureWriter::TextureWriter(const CaseConfig& config, fs::path out_dir, bool ascii, TextureStage::Progress progress)
-    : out_(std::move(out_dir)), ascii_(ascii), stage_(config, std::move(progress)), pvd_(out_ / "texture.pvd") {}
+    : out_(std::move(out_dir)),
+      ascii_(ascii),
+      output_interval_(config.output.interval),
+      file_interval_(config.texture.file_interval),
+      write_vtp_(config.texture.write_vtp),
+      stage_(config, std::move(progress)),
+      pvd_(out_ / "texture.pvd") {}
 
 template <int D>
 void TextureWriter::frame(const std::string& number, std::shared_ptr<const ImageData> grid,
@@ -57,11 +64,19 @@ void TextureWriter::frame(const std::string& number, std::shared_ptr<const Image
   std::vector<Vec3> x(p.size(), Vec3::Zero()), u(p.size(), Vec3::Zero());
   for (std::size_t i = 0; i < p.size(); ++i) x[i].head<D>() = p.position[i], u[i].head<D>() = p.velocity[i];
   stage_.spawn(x, u, category, time);
-  const std::string stem = "texture_" + number;
-  writeTextureBinary(out_ / (stem + ".bin"), stage_.cloud(), time);
-  writeTextureVtp(out_ / (stem + ".vtp"), stage_.cloud(), time, ascii_);
-  pvd_.add(time, stem + ".vtp");
-  pvd_.write();
+  // texture.file_interval: files only at the frames nearest its multiples (the rule of render.frame_interval)
+  const bool files = !(file_interval_ > output_interval_ * (1.0 + 1e-9)) ||
+                     std::abs(time - std::round(time / file_interval_) * file_interval_) <
+                         0.5 * output_interval_ * (1.0 - 1e-9);
+  if (files) {
+    const std::string stem = "texture_" + number;
+    writeTextureBinary(out_ / (stem + ".bin"), stage_.cloud(), time);
+    if (write_vtp_) {
+      writeTextureVtp(out_ / (stem + ".vtp"), stage_.cloud(), time, ascii_);
+      pvd_.add(time, stem + ".vtp");
+    }
+    pvd_.write();  // lists the ParaView files (none without them)
+  }
   rows_.push_back(stage_.row(time));
   writeTextureCsv(out_ / "texture.csv", rows_);
 }

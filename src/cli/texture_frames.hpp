@@ -66,6 +66,8 @@ class TextureWriter {
  private:
   std::filesystem::path out_;
   bool ascii_;
+  double output_interval_, file_interval_;  // output.interval, texture.file_interval
+  bool write_vtp_;
   TextureStage stage_;
   PvdCollection pvd_;
   std::vector<TextureCountsRow> rows_;

@@ -53,6 +53,30 @@ PY
 test -s "$run/plots/texture_extent.png"
 test -s "$run/plots/texture_00000.png"
 
+# [texture] vtp = false: texture.pvd lists nothing and the tool reads the texture_NNNNN.bin files instead (format:
+# src/io/texture_files.hpp); the same clouds give the same table.
+bin_run="$work/bin_run"
+mkdir -p "$bin_run/texture"
+"$py" - "$bin_run" <<'PY'
+import os, struct, sys
+run = sys.argv[1]
+def cloud(path, time, pts):
+    n = len(pts)
+    with open(path, "wb") as f:
+        f.write(b"MFTEXTR1" + struct.pack("<IIdQ", 1, 0, time, n))
+        f.write(b"".join(struct.pack("<3d", p[0], p[1], 0.0) for p in pts))
+        f.write(struct.pack(f"<{3 * n}d", *([0.0] * 3 * n)) + struct.pack(f"<{n}d", *([7.5e-5] * n)))
+        f.write(bytes(p[2] for p in pts) + struct.pack(f"<{n}Q", *range(n)))
+mist = [(0.01 * (i + 1), 0.2, 1) for i in range(100)]
+micro = [(0.5, 0.05, 3) for _ in range(10)]
+cloud(os.path.join(run, "texture", "texture_00000.bin"), 0.1, mist + micro + [(0.4, 0.3, 0)])
+cloud(os.path.join(run, "texture", "texture_00001.bin"), 0.2, micro)
+with open(os.path.join(run, "texture", "texture.pvd"), "w") as f:
+    f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n<Collection>\n</Collection>\n</VTKFile>\n')
+PY
+"$py" "$tool" "$bin_run" --frames 0
+cmp "$run/plots/texture_extent.csv" "$bin_run/plots/texture_extent.csv"
+
 if "$py" "$tool" "$work/missing" 2>"$work/err"; then echo "missing run accepted"; exit 1; fi
 grep -q "plot_texture: .*texture.pvd does not exist" "$work/err"
 if "$py" "$tool" "$run" --frames 7 2>"$work/err"; then echo "bad frame accepted"; exit 1; fi
