@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/bubble_pressure.hpp"
@@ -70,44 +71,81 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
   buildNeighbours();
-  findBubbles();
-  const double dt = chooseTimeStepFor(until);
-  predict(dt);
-  collide(dt);
-  report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
-  state_.created += report_.created;
-  if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
-    const std::size_t n = state_.particles.size();
-    roles_.extendForLiquid(n);
-    regions_.region_of.resize(n, -1);
-    regions_.enclosed_particle.resize(n, 0);
+  {
+    auto t = timer_.scope(Stage::GasRegions);
+    findBubbles();
+  }
+  double dt = 0.0;
+  {
+    auto t = timer_.scope(Stage::TimeStep);
+    dt = chooseTimeStepFor(until);
+  }
+  {
+    auto t = timer_.scope(Stage::Predict);
+    predict(dt);
+  }
+  {
+    auto t = timer_.scope(Stage::Collision);
+    collide(dt);
+  }
+  {
+    auto t = timer_.scope(Stage::OpenBoundaries);
+    report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
+    state_.created += report_.created;
+    if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
+      const std::size_t n = state_.particles.size();
+      roles_.extendForLiquid(n);
+      regions_.region_of.resize(n, -1);
+      regions_.enclosed_particle.resize(n, 0);
+    }
   }
   buildNeighbours();
   // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
-  computeLiquidNumberDensity();
+  {
+    auto t = timer_.scope(Stage::NumberDensity);
+    computeLiquidNumberDensity();
+  }
   double tp = omp_get_wtime();
-  solveLiquidPressure(dt);
-  setLiquidWallPressure();
-  report_.seconds_pressure = omp_get_wtime() - tp;
-  correctLiquid(dt);
-  if (roles_.enclosed_count > 0) moveBubbleGas(dt);
+  solve_seconds_ = 0.0;
+  solveLiquidPressure(dt);  // assembly, then the solve (timed in solveLinear)
+  timer_.add(Stage::LiquidAssembly, omp_get_wtime() - tp - solve_seconds_);
+  {
+    auto t = timer_.scope(Stage::LiquidCorrection);
+    setLiquidWallPressure();
+    report_.seconds_pressure = omp_get_wtime() - tp;
+    correctLiquid(dt);
+  }
+  if (roles_.enclosed_count > 0) {
+    auto t = timer_.scope(Stage::BubbleGas);
+    moveBubbleGas(dt);
+  }
   // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
   if (roles_.gas_count > 0) {
     buildNeighbours();
     tp = omp_get_wtime();
+    solve_seconds_ = 0.0;
     solveGasPressure(dt);
-    report_.seconds_pressure += omp_get_wtime() - tp;
+    const double gas_seconds = omp_get_wtime() - tp;
+    timer_.add(Stage::GasAssembly, gas_seconds - solve_seconds_);
+    report_.seconds_pressure += gas_seconds;
+    auto t = timer_.scope(Stage::GasCorrection);
     correctGas(dt);
     riseEntrainedGas(dt);
   }
-  markEscaped();
-  report_.removed = removeOutflow<D>(state_.particles, config_);
-  state_.removed += report_.removed;
+  {
+    auto t = timer_.scope(Stage::OpenBoundaries);
+    markEscaped();
+    report_.removed = removeOutflow<D>(state_.particles, config_);
+    state_.removed += report_.removed;
+  }
   state_.time = (until - state_.time <= dt) ? until : state_.time + dt;
   state_.step += 1;
   state_.dt = dt;
   report_.dt = dt;
-  checkHealth(dt);
+  {
+    auto t = timer_.scope(Stage::Health);
+    checkHealth(dt);
+  }
   report_.seconds_total = omp_get_wtime() - t0;
   return report_;
 }
@@ -182,6 +220,7 @@ bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& 
 
 template <int D>
 void MpsSolver<D>::buildNeighbours() {
+  auto t = timer_.scope(Stage::Neighbours);
   search_.build(state_.particles.position, state_.particles.kind, neighbours_);
 }
 
@@ -280,6 +319,10 @@ template <int D>
 void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                                Eigen::VectorXd& x, const char* which, int& iterations) {
   const auto result = linear_solver_->solve(a, b, x);
+  const bool gas = std::string_view(which) == "gas";
+  timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
+  timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
+  solve_seconds_ += result.setup_seconds + result.solve_seconds;
   iterations = result.iterations;
   if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
     std::ostringstream msg;

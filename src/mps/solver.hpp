@@ -26,6 +26,7 @@
 #include "mps/pressure_poisson.hpp"
 #include "mps/reference_density.hpp"
 #include "mps/simulation_state.hpp"
+#include "mps/stage_timer.hpp"
 
 namespace mistfall {
 
@@ -72,6 +73,9 @@ class MpsSolver {
   const StepReport& step(double until);
 
   const MpsConstants& constants() const { return constants_; }
+  // Wall seconds per stage of every step since construction (or since the caller reset it).
+  StageTimer& stageTimer() { return timer_; }
+  const StageTimer& stageTimer() const { return timer_; }
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   double particleMass(std::size_t i) const;
@@ -128,6 +132,8 @@ class MpsSolver {
   std::unique_ptr<LinearSolver> linear_solver_;
   StepReport report_;
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
+  StageTimer timer_;
+  double solve_seconds_ = 0.0;  // setup + solve seconds of the linear solves since the stage began
 };
 
 }  // namespace mistfall
