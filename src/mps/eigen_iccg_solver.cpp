@@ -24,7 +24,7 @@ class EigenIccgSolver final : public LinearSolver {
   }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x) override {
+                          Eigen::VectorXd& x, const std::vector<std::int32_t>*) override {
     LinearSolveResult result;
     if (a.rows() == 0) {
       result.converged = true;
@@ -62,12 +62,13 @@ class EigenIccgSolver final : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> makeHypreAmgSolver(double tolerance, int max_iterations);
+std::unique_ptr<LinearSolver> makeHypreAmgSolver(double tolerance, int max_iterations, PreconditionerReuse reuse);
 
-std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations) {
+std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations,
+                                               PreconditionerReuse reuse) {
   switch (kind) {
     case PressureSolverKind::EigenIccg: return std::make_unique<EigenIccgSolver>(tolerance, max_iterations);
-    case PressureSolverKind::HypreAmg: return makeHypreAmgSolver(tolerance, max_iterations);
+    case PressureSolverKind::HypreAmg: return makeHypreAmgSolver(tolerance, max_iterations, reuse);
   }
   return nullptr;
 }

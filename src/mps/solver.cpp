@@ -22,6 +22,14 @@
 namespace mistfall {
 
 namespace {
+// The neighbour list's skin, in particle spacings (neighbor_search.hpp): the list is rebuilt when a particle has
+// moved more than half of it since the last build. A larger skin means fewer builds but longer lists for every
+// operator to filter.
+constexpr double kNeighbourSkin = 0.3;
+// The AMG hierarchy of a pressure system preconditions the next steps' systems while their unknowns are the same
+// particles (linear_solver.hpp), at most this many, and while they take at most one CG iteration more.
+constexpr PreconditionerReuse kPreconditionerReuse{8, 1};
+
 template <int D>
 Vec<D> firstComponents(const std::array<double, 3>& a) {
   Vec<D> v;
@@ -40,9 +48,12 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
       gravity_(firstComponents<D>(config.physics.gravity)),
       domain_lower_(firstComponents<D>(config.domain.min)),
       domain_upper_(firstComponents<D>(config.domain.max)),
-      search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian)),
-      linear_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
-                                      config.numerics.solver_max_iterations)),
+      search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian),
+              kNeighbourSkin * constants_.l0),
+      liquid_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
+                                      config.numerics.solver_max_iterations, kPreconditionerReuse)),
+      gas_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
+                                   config.numerics.solver_max_iterations, kPreconditionerReuse)),
       full_neighbour_count_(latticeNeighbourCount(D, constants_.re_number_density, constants_.l0)) {
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
@@ -138,7 +149,11 @@ const StepReport& MpsSolver<D>::step(double until) {
     report_.removed = removeOutflow<D>(state_.particles, config_);
     state_.removed += report_.removed;
   }
-  state_.time = (until - state_.time <= dt) ? until : state_.time + dt;
+  const bool reached = until - state_.time <= dt;
+  state_.time = reached ? until : state_.time + dt;
+  // An output time, where a checkpoint may be written: a run resumed from it starts without what the solver keeps
+  // from step to step beyond the state, so the unbroken run drops it here too (bit-identical resume).
+  if (reached) forgetReusedState();
   state_.step += 1;
   state_.dt = dt;
   report_.dt = dt;
@@ -218,10 +233,13 @@ bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& 
   return count >= fraction * full_neighbour_count_;
 }
 
+// The neighbour list for the current positions: the last one while it still covers them (neighbor_search.hpp:
+// the results are the same, bit for bit, as with a fresh list), else a new one.
 template <int D>
 void MpsSolver<D>::buildNeighbours() {
   auto t = timer_.scope(Stage::Neighbours);
-  search_.build(state_.particles.position, state_.particles.kind, neighbours_);
+  const auto& p = state_.particles;
+  if (!search_.covers(p.position, p.kind)) search_.build(p.position, p.kind, neighbours_);
 }
 
 template <int D>
@@ -318,20 +336,39 @@ void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* whi
 template <int D>
 void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                                Eigen::VectorXd& x, const char* which, int& iterations) {
-  const auto result = linear_solver_->solve(a, b, x);
   const bool gas = std::string_view(which) == "gas";
+  // What each row is: the particle of the unknown (system_), or -1 - g for bubble g's merged unknown (lumped_).
+  row_ids_.assign(static_cast<std::size_t>(a.rows()), -1);
+  const auto& particle_of = system_.particle_of;
+  if (!gas && static_cast<Eigen::Index>(lumped_.column_of_row.size()) == static_cast<Eigen::Index>(particle_of.size()) &&
+      lumped_.matrix.rows() == a.rows()) {
+    for (std::size_t r = 0; r < particle_of.size(); ++r) {
+      const auto column = lumped_.column_of_row[r];
+      row_ids_[column] = column < lumped_.first_group_row ? particle_of[r] : -1 - (column - lumped_.first_group_row);
+    }
+  } else if (static_cast<Eigen::Index>(particle_of.size()) == a.rows()) {
+    row_ids_.assign(particle_of.begin(), particle_of.end());
+  }
+  LinearSolver& solver = gas ? *gas_solver_ : *liquid_solver_;
+  const auto result = solver.solve(a, b, x, &row_ids_);
   timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
   timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
   solve_seconds_ += result.setup_seconds + result.solve_seconds;
   iterations = result.iterations;
   if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
     std::ostringstream msg;
-    msg << which << " pressure solve (" << linear_solver_->name() << ") did not converge: relative residual "
+    msg << which << " pressure solve (" << solver.name() << ") did not converge: relative residual "
         << result.relative_residual << " after " << result.iterations << " iterations ("
         << "numerics.solver_tolerance = " << config_.numerics.solver_tolerance << ")";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }
   report_.ppe_residual = std::max(report_.ppe_residual, result.relative_residual);
+}
+
+template <int D>
+void MpsSolver<D>::forgetReusedState() {
+  liquid_solver_->forget();
+  gas_solver_->forget();
 }
 
 template <int D>
