@@ -1,15 +1,27 @@
-// hypre conjugate gradient preconditioned with BoomerAMG (the "amg" pressure solver), on MPI_COMM_SELF.
-// The matrix goes to hypre as a ParCSR matrix built directly from Eigen's rows (one block, the diagonal first in
-// each row, as hypre keeps it); the AMG hierarchy may be kept for the next systems (PreconditionerReuse,
-// linear_solver.hpp): hypre's BoomerAMG solve takes the fine-level matrix it is given, so a kept hierarchy
-// smooths with the new matrix and only its coarse levels are old.
+// The "amg" pressure solver: conjugate gradients preconditioned with one V-cycle of algebraic multigrid. The
+// hierarchy (coarse grids, interpolation, coarse operators) is built by hypre's BoomerAMG on one process; the
+// iterations are mistfall's own, OpenMP-parallel (Debian's hypre has no OpenMP, so its solve would run on one
+// core). Every operation of the iterations gives the same bits whatever the number of threads:
+//  * matrix-vector products, restriction (with P^T stored as rows) and interpolation: one row per thread at a time;
+//  * the smoother: hybrid Gauss-Seidel in kBlocks fixed blocks of consecutive rows (Gauss-Seidel inside a block,
+//    Jacobi between blocks: what hypre does with kBlocks threads), a forward sweep down the cycle and a backward
+//    sweep up (the cycle is symmetric, as CG needs), a dense Cholesky solve on the coarsest level;
+//  * dot products: partial sums over kChunks fixed chunks of rows, added in order.
+// The hierarchy may be kept for the next systems (PreconditionerReuse, linear_solver.hpp): the cycle smooths with
+// the new matrix, only its coarse levels are old.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include <HYPRE.h>
-#include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
-#include <_hypre_parcsr_mv.h>
+#include <_hypre_parcsr_ls.h>
+#pragma GCC diagnostic pop
 #include <mpi.h>
+#include <omp.h>
 
-#include <cstring>
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 #include "mps/linear_solver.hpp"
@@ -19,7 +31,11 @@ namespace mistfall {
 
 namespace {
 
-// A ParCSR copy of `a` on MPI_COMM_SELF: one diagonal block, each row's diagonal entry first.
+constexpr int kBlocks = 8;   // smoother blocks (the results do not depend on the thread count)
+constexpr int kChunks = 64;  // dot-product chunks
+constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
+
+// A ParCSR copy of `a` on MPI_COMM_SELF for hypre's setup: one diagonal block, each row's diagonal entry first.
 hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
   const HYPRE_BigInt rows = static_cast<HYPRE_BigInt>(a.rows());
   const HYPRE_Int nnz = static_cast<HYPRE_Int>(a.nonZeros());
@@ -59,14 +75,109 @@ hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor
   return m;
 }
 
-HYPRE_ParVector parVectorCopy(const Eigen::VectorXd& v) {
-  HYPRE_BigInt starts[2] = {0, static_cast<HYPRE_BigInt>(v.size())};
-  HYPRE_ParVector p;
-  HYPRE_ParVectorCreate(MPI_COMM_SELF, static_cast<HYPRE_BigInt>(v.size()), starts, &p);
-  HYPRE_ParVectorInitialize(p);
-  std::memcpy(hypre_VectorData(hypre_ParVectorLocalVector(reinterpret_cast<hypre_ParVector*>(p))), v.data(),
-              sizeof(double) * static_cast<std::size_t>(v.size()));
-  return p;
+// Rows of a sparse matrix (borrowed arrays) and where each row's diagonal entry is.
+struct Rows {
+  std::int64_t n = 0;
+  const int* start = nullptr;
+  const int* column = nullptr;
+  const double* value = nullptr;
+  std::vector<int> diagonal;  // index of a_ii in column/value (square matrices)
+  std::vector<char> inside;   // every column of the row in the row's smoother block
+
+  // The diagonal entries and which rows stay inside their smoother block (square matrices).
+  void prepare() {
+    diagonal.resize(n);
+    inside.resize(n);
+    const int blocks = static_cast<int>(std::min<std::int64_t>(kBlocks, n));
+#pragma omp parallel for schedule(static)
+    for (int block = 0; block < blocks; ++block) {
+      const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
+      for (std::int64_t i = first; i < last; ++i) {
+        diagonal[i] = -1;
+        bool in = true;
+        for (int k = start[i]; k < start[i + 1]; ++k) {
+          if (column[k] == i) diagonal[i] = k;
+          in = in && column[k] >= first && column[k] < last;
+        }
+        inside[i] = in;
+      }
+    }
+  }
+  // out = M v
+  void multiply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (int k = start[i]; k < start[i + 1]; ++k) s += value[k] * v[column[k]];
+      out[i] = s;
+    }
+  }
+};
+
+Rows rowsOf(hypre_ParCSRMatrix* m) {
+  hypre_CSRMatrix* d = hypre_ParCSRMatrixDiag(m);
+  Rows r;
+  r.n = hypre_CSRMatrixNumRows(d);
+  r.start = hypre_CSRMatrixI(d);
+  r.column = hypre_CSRMatrixJ(d);
+  r.value = hypre_CSRMatrixData(d);
+  return r;
+}
+
+Rows rowsOf(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
+  Rows r;
+  r.n = a.rows();
+  r.start = a.outerIndexPtr();
+  r.column = a.innerIndexPtr();
+  r.value = a.valuePtr();
+  return r;
+}
+
+// The transpose of a rows x cols matrix, stored by rows (P^T for the restriction).
+struct OwnedRows {
+  std::vector<int> start, column;
+  std::vector<double> value;
+  Rows rows() const {
+    Rows r;
+    r.n = static_cast<std::int64_t>(start.size()) - 1;
+    r.start = start.data();
+    r.column = column.data();
+    r.value = value.data();
+    return r;
+  }
+};
+
+OwnedRows transposeOf(const Rows& p, std::int64_t cols) {
+  OwnedRows t;
+  const int nnz = p.start[p.n];
+  t.start.assign(cols + 1, 0);
+  for (int k = 0; k < nnz; ++k) ++t.start[p.column[k] + 1];
+  for (std::int64_t c = 0; c < cols; ++c) t.start[c + 1] += t.start[c];
+  t.column.resize(nnz);
+  t.value.resize(nnz);
+  std::vector<int> fill(t.start.begin(), t.start.end() - 1);
+  for (std::int64_t r = 0; r < p.n; ++r)
+    for (int k = p.start[r]; k < p.start[r + 1]; ++k) {
+      const int at = fill[p.column[k]]++;
+      t.column[at] = static_cast<int>(r);
+      t.value[at] = p.value[k];
+    }
+  return t;
+}
+
+// sum_i a_i b_i over fixed chunks of rows, added in order (the same bits on any number of threads).
+double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  std::array<double, kChunks> part{};
+  const std::int64_t n = a.size();
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < kChunks; ++c) {
+    double s = 0.0;
+    for (std::int64_t i = n * c / kChunks; i < n * (c + 1) / kChunks; ++i) s += a[i] * b[i];
+    part[c] = s;
+  }
+  double s = 0.0;
+  for (double v : part) s += v;
+  return s;
 }
 
 class HypreAmgSolver final : public LinearSolver {
@@ -77,15 +188,12 @@ class HypreAmgSolver final : public LinearSolver {
     static bool hypre_started = [] { HYPRE_Init(); return true; }();
     (void)hypre_started;
   }
-  ~HypreAmgSolver() override {
-    forget();
-    if (matrix_) hypre_ParCSRMatrixDestroy(matrix_);
-  }
+  ~HypreAmgSolver() override { forget(); }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                           Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids) override {
     LinearSolveResult result;
-    const HYPRE_BigInt rows = static_cast<HYPRE_BigInt>(a.rows());
+    const std::int64_t rows = a.rows();
     if (rows == 0) {
       result.converged = true;
       return result;
@@ -95,72 +203,50 @@ class HypreAmgSolver final : public LinearSolver {
       result.converged = true;
       return result;
     }
-    if (!a.isCompressed()) throw std::logic_error("hypre solver needs a compressed matrix");
-    const double t0 = MPI_Wtime();
+    if (!a.isCompressed()) throw std::logic_error("the amg solver needs a compressed matrix");
+    const double t0 = omp_get_wtime();
     if (x.size() != rows) x.setZero(rows);
-    const Eigen::VectorXd guess = x;
-    hypre_ParCSRMatrix* m = parCsrCopy(a);
-    HYPRE_ParVector par_b = parVectorCopy(b);
-    HYPRE_ParVector par_x = parVectorCopy(x);
-    const HYPRE_ParCSRMatrix ma = reinterpret_cast<HYPRE_ParCSRMatrix>(m);
-
-    const bool reuse = pcg_ && reuse_.max_reuse > 0 && row_ids && rows == rows_ && *row_ids == ids_ &&
+    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_ids && rows == rows_ && *row_ids == ids_ &&
                        uses_ < reuse_.max_reuse && last_iterations_ <= setup_iterations_ + reuse_.slack;
-    auto setUp = [&] {
-      forget();
-      createSolver();
-      HYPRE_ParCSRPCGSetup(pcg_, ma, par_b, par_x);
-      rows_ = rows;
-      if (row_ids) ids_ = *row_ids;
-      uses_ = 0;
-    };
+    const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
     } else {
-      setUp();
+      setUp(a, row_ids);
     }
-    double t1 = MPI_Wtime();
-    HYPRE_ParCSRPCGSolve(pcg_, ma, par_b, par_x);
-    HYPRE_Int iterations = 0;
-    HYPRE_PCGGetNumIterations(pcg_, &iterations);
-    copyOut(par_x, x);
+    fine_ = rowsOf(a);
+    fine_.prepare();
+    double t1 = omp_get_wtime();
+    int iterations = iterate(b, x);
     double setup_seconds = t1 - t0;
-    if (reuse && !(relativeResidual(a, b, x) <= tolerance_ * 10.0)) {  // the kept hierarchy did not do: afresh
+    bool converged = relativeResidual(a, b, x) <= tolerance_ * 10.0;
+    if (reuse && !converged) {  // the kept hierarchy did not do: afresh
       x = guess;
-      std::memcpy(hypre_VectorData(hypre_ParVectorLocalVector(reinterpret_cast<hypre_ParVector*>(par_x))), x.data(),
-                  sizeof(double) * static_cast<std::size_t>(rows));
-      const double t2 = MPI_Wtime();
-      setUp();
-      t1 = MPI_Wtime();
+      const double t2 = omp_get_wtime();
+      setUp(a, row_ids);
+      t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
-      HYPRE_ParCSRPCGSolve(pcg_, ma, par_b, par_x);
-      HYPRE_PCGGetNumIterations(pcg_, &iterations);
-      copyOut(par_x, x);
+      iterations = iterate(b, x);
       result.reused = false;
     } else {
       result.reused = reuse;
     }
     if (uses_ == 0) setup_iterations_ = iterations;
     last_iterations_ = iterations;
-    HYPRE_ParVectorDestroy(par_b);
-    HYPRE_ParVectorDestroy(par_x);
-    // The hierarchy's fine level refers to the matrix of the last solve: keep it until the next one.
-    if (matrix_) hypre_ParCSRMatrixDestroy(matrix_);
-    matrix_ = m;
-    HYPRE_ClearAllErrors();
-
     result.iterations = iterations;
     result.relative_residual = relativeResidual(a, b, x);
     result.converged = result.relative_residual <= tolerance_ * 10.0;
     result.setup_seconds = setup_seconds;
-    result.solve_seconds = MPI_Wtime() - t1;
+    result.solve_seconds = omp_get_wtime() - t1;
     return result;
   }
 
   void forget() override {
     if (amg_) HYPRE_BoomerAMGDestroy(amg_);
-    if (pcg_) HYPRE_ParCSRPCGDestroy(pcg_);
-    amg_ = pcg_ = nullptr;
+    amg_ = nullptr;
+    if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
+    setup_matrix_ = nullptr;
+    levels_.clear();
     ids_.clear();
     rows_ = -1;
     uses_ = 0;
@@ -169,43 +255,185 @@ class HypreAmgSolver final : public LinearSolver {
   const char* name() const override { return "amg"; }
 
  private:
-  void createSolver() {
-    HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg_);
-    HYPRE_PCGSetTol(pcg_, tolerance_);
-    HYPRE_PCGSetMaxIter(pcg_, max_iterations_);
-    HYPRE_PCGSetTwoNorm(pcg_, 1);
-    HYPRE_PCGSetPrintLevel(pcg_, 0);
+  struct Level {
+    Rows a;               // the level's operator (level 0: the system being solved, set per solve)
+    Rows p;               // interpolation from the next level (not on the coarsest)
+    OwnedRows pt;         // P^T
+    Eigen::VectorXd x, b, r, old;
+  };
+
+  // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
+  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_ids) {
+    forget();
+    setup_matrix_ = parCsrCopy(a);
     HYPRE_BoomerAMGCreate(&amg_);
     HYPRE_BoomerAMGSetPrintLevel(amg_, 0);
     // Settings chosen by measurement on the 2D dam break at 40k particles (ms per step, 2 threads): PMIS +
     // extended+i interpolation + one level of aggressive coarsening, theta 0.25: 120 ms (16 CG iterations);
     // HMIS + classical interpolation, no aggressive coarsening, theta 0.35: 83 ms (6 iterations).
-    HYPRE_BoomerAMGSetCoarsenType(amg_, 10);        // HMIS
-    HYPRE_BoomerAMGSetInterpType(amg_, 0);          // classical modified interpolation
+    HYPRE_BoomerAMGSetCoarsenType(amg_, 10);  // HMIS
+    HYPRE_BoomerAMGSetInterpType(amg_, 0);    // classical modified interpolation
     HYPRE_BoomerAMGSetPMaxElmts(amg_, 4);
     HYPRE_BoomerAMGSetAggNumLevels(amg_, 0);
     HYPRE_BoomerAMGSetStrongThreshold(amg_, 0.35);
-    HYPRE_BoomerAMGSetRelaxType(amg_, 6);           // symmetric hybrid Gauss-Seidel
-    HYPRE_BoomerAMGSetNumSweeps(amg_, 1);
-    HYPRE_BoomerAMGSetTol(amg_, 0.0);
     HYPRE_BoomerAMGSetMaxIter(amg_, 1);
-    HYPRE_PCGSetPrecond(pcg_, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
-                        reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup), amg_);
+    HYPRE_BoomerAMGSetTol(amg_, 0.0);
+    const HYPRE_ParCSRMatrix m = reinterpret_cast<HYPRE_ParCSRMatrix>(setup_matrix_);
+    HYPRE_BoomerAMGSetup(amg_, m, nullptr, nullptr);
+    auto* data = reinterpret_cast<hypre_ParAMGData*>(amg_);
+    const int count = std::max(1, static_cast<int>(hypre_ParAMGDataNumLevels(data)));
+    levels_.resize(count);
+    for (int l = 0; l < count; ++l) {
+      Level& level = levels_[l];
+      if (l > 0) {
+        level.a = rowsOf(hypre_ParAMGDataAArray(data)[l]);
+        level.a.prepare();
+      }
+      if (l + 1 < count) {
+        level.p = rowsOf(hypre_ParAMGDataPArray(data)[l]);
+        const auto coarse_rows = hypre_CSRMatrixNumRows(hypre_ParCSRMatrixDiag(hypre_ParAMGDataAArray(data)[l + 1]));
+        level.pt = transposeOf(level.p, coarse_rows);
+      }
+      const std::int64_t n = l == 0 ? a.rows() : level.a.n;
+      level.x.setZero(n);
+      level.b.setZero(n);
+      level.r.setZero(n);
+      level.old.setZero(n);
+    }
+    // The coarsest level is solved exactly (dense Cholesky; LDLT if round-off leaves it semi-definite).
+    const Rows coarsest = count == 1 ? rowsOf(a) : levels_.back().a;
+    coarse_dense_ = coarsest.n <= kMaxDense;
+    if (coarse_dense_) factorCoarsest(coarsest);
+    rows_ = a.rows();
+    if (row_ids) ids_ = *row_ids;
+    uses_ = 0;
   }
 
-  static void copyOut(HYPRE_ParVector v, Eigen::VectorXd& x) {
-    std::memcpy(x.data(), hypre_VectorData(hypre_ParVectorLocalVector(reinterpret_cast<hypre_ParVector*>(v))),
-                sizeof(double) * static_cast<std::size_t>(x.size()));
+  void factorCoarsest(const Rows& coarsest) {
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(coarsest.n, coarsest.n);
+    for (std::int64_t i = 0; i < coarsest.n; ++i)
+      for (int k = coarsest.start[i]; k < coarsest.start[i + 1]; ++k) dense(i, coarsest.column[k]) = coarsest.value[k];
+    coarse_llt_.compute(dense);
+    coarse_ok_ = coarse_llt_.info() == Eigen::Success;
+    if (!coarse_ok_) coarse_ldlt_.compute(dense);
+  }
+
+  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward).
+  static void smooth(Level& level, bool forward) {
+    const Rows& a = level.a;
+    const std::int64_t n = a.n;
+    Eigen::VectorXd& x = level.x;
+    level.old = x;
+    const Eigen::VectorXd& old = level.old;
+    const Eigen::VectorXd& b = level.b;
+    const int blocks = static_cast<int>(std::min<std::int64_t>(kBlocks, n));
+#pragma omp parallel for schedule(static)
+    for (int block = 0; block < blocks; ++block) {
+      const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
+      auto relax = [&](std::int64_t i) {
+        const int d = a.diagonal[i];
+        double s = b[i];
+        if (a.inside[i]) {  // Gauss-Seidel: the newest values
+          for (int k = a.start[i]; k < d; ++k) s -= a.value[k] * x[a.column[k]];
+          for (int k = d + 1; k < a.start[i + 1]; ++k) s -= a.value[k] * x[a.column[k]];
+        } else {  // next to another block: its values from before the sweep (Jacobi between blocks)
+          for (int k = a.start[i]; k < a.start[i + 1]; ++k) {
+            if (k == d) continue;
+            const int j = a.column[k];
+            s -= a.value[k] * ((j >= first && j < last) ? x[j] : old[j]);
+          }
+        }
+        x[i] = s / a.value[d];
+      };
+      if (forward)
+        for (std::int64_t i = first; i < last; ++i) relax(i);
+      else
+        for (std::int64_t i = last - 1; i >= first; --i) relax(i);
+    }
+  }
+
+  // x = V-cycle(b) on level l (x starts from 0).
+  void cycle(std::size_t l) {
+    Level& level = levels_[l];
+    if (l + 1 == levels_.size()) {
+      if (coarse_dense_) {
+        level.x = coarse_ok_ ? Eigen::VectorXd(coarse_llt_.solve(level.b)) : Eigen::VectorXd(coarse_ldlt_.solve(level.b));
+      } else {  // a large system hypre did not coarsen: symmetric Gauss-Seidel
+        level.x.setZero();
+        smooth(level, true);
+        smooth(level, false);
+      }
+      return;
+    }
+    level.x.setZero();
+    smooth(level, true);
+    level.a.multiply(level.x, level.r);
+    level.r = level.b - level.r;
+    Level& next = levels_[l + 1];
+    level.pt.rows().multiply(level.r, next.b);
+    cycle(l + 1);
+    level.p.multiply(next.x, level.old);
+    level.x += level.old;
+    smooth(level, false);
+  }
+
+  // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b|. Returns the iterations.
+  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    levels_[0].a = fine_;
+    const std::int64_t n = b.size();
+    r_.resize(n);
+    q_.resize(n);
+    fine_.multiply(x, q_);
+    r_ = b - q_;
+    const double bb = dot(b, b);
+    const double goal = tolerance_ * tolerance_ * bb;
+    double rr = dot(r_, r_);
+    auto precondition = [&] {
+      levels_[0].b = r_;
+      cycle(0);
+      z_ = levels_[0].x;
+    };
+    int iterations = 0;
+    if (rr <= goal) return iterations;
+    precondition();
+    p_ = z_;
+    double rz = dot(r_, z_);
+    while (iterations < max_iterations_) {
+      fine_.multiply(p_, q_);
+      const double alpha = rz / dot(p_, q_);
+#pragma omp parallel for schedule(static)
+      for (std::int64_t i = 0; i < n; ++i) {
+        x[i] += alpha * p_[i];
+        r_[i] -= alpha * q_[i];
+      }
+      ++iterations;
+      rr = dot(r_, r_);
+      if (rr <= goal || !std::isfinite(rr)) break;
+      precondition();
+      const double rz_next = dot(r_, z_);
+      const double beta = rz_next / rz;
+      rz = rz_next;
+#pragma omp parallel for schedule(static)
+      for (std::int64_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
+    }
+    return iterations;
   }
 
   double tolerance_;
   int max_iterations_;
   PreconditionerReuse reuse_;
-  HYPRE_Solver pcg_ = nullptr, amg_ = nullptr;
-  hypre_ParCSRMatrix* matrix_ = nullptr;  // the last solve's matrix (the kept hierarchy's fine level)
-  std::vector<std::int32_t> ids_;         // the rows of the kept hierarchy
-  HYPRE_BigInt rows_ = -1;
-  int uses_ = 0;                          // systems solved with the kept hierarchy since its setup
+  HYPRE_Solver amg_ = nullptr;
+  hypre_ParCSRMatrix* setup_matrix_ = nullptr;  // the matrix the hierarchy was built for (hypre's level 0)
+  std::vector<Level> levels_;
+  Rows fine_;
+  Eigen::LLT<Eigen::MatrixXd> coarse_llt_;
+  Eigen::LDLT<Eigen::MatrixXd> coarse_ldlt_;
+  bool coarse_ok_ = true;
+  bool coarse_dense_ = true;
+  Eigen::VectorXd r_, z_, p_, q_;
+  std::vector<std::int32_t> ids_;  // the rows of the kept hierarchy
+  std::int64_t rows_ = -1;
+  int uses_ = 0;  // systems solved with the kept hierarchy since its setup
   int setup_iterations_ = 0, last_iterations_ = 0;
 };
 
