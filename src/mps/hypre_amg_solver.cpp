@@ -31,7 +31,8 @@ namespace mistfall {
 
 namespace {
 
-constexpr int kBlocks = 8;   // smoother blocks (the results do not depend on the thread count)
+constexpr int kBlocks = 8;   // smoother blocks at most (the results do not depend on the thread count)
+constexpr std::int64_t kMinBlockRows = 2048;  // rows per block at least (thin blocks smooth worse, and slower)
 constexpr int kChunks = 64;  // dot-product chunks
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
 
@@ -82,25 +83,17 @@ struct Rows {
   const int* column = nullptr;
   const double* value = nullptr;
   std::vector<int> diagonal;  // index of a_ii in column/value (square matrices)
-  std::vector<char> inside;   // every column of the row in the row's smoother block
 
-  // The diagonal entries and which rows stay inside their smoother block (square matrices).
-  void prepare() {
+  void findDiagonal() {
     diagonal.resize(n);
-    inside.resize(n);
-    const int blocks = static_cast<int>(std::min<std::int64_t>(kBlocks, n));
 #pragma omp parallel for schedule(static)
-    for (int block = 0; block < blocks; ++block) {
-      const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
-      for (std::int64_t i = first; i < last; ++i) {
-        diagonal[i] = -1;
-        bool in = true;
-        for (int k = start[i]; k < start[i + 1]; ++k) {
-          if (column[k] == i) diagonal[i] = k;
-          in = in && column[k] >= first && column[k] < last;
+    for (std::int64_t i = 0; i < n; ++i) {
+      diagonal[i] = -1;
+      for (int k = start[i]; k < start[i + 1]; ++k)
+        if (column[k] == i) {
+          diagonal[i] = k;
+          break;
         }
-        inside[i] = in;
-      }
     }
   }
   // out = M v
@@ -191,7 +184,8 @@ class HypreAmgSolver final : public LinearSolver {
   ~HypreAmgSolver() override { forget(); }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids) override {
+                          Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids,
+                          const std::vector<std::int32_t>* row_order) override {
     LinearSolveResult result;
     const std::int64_t rows = a.rows();
     if (rows == 0) {
@@ -211,11 +205,10 @@ class HypreAmgSolver final : public LinearSolver {
     const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
+      useFine(a, row_order);
     } else {
-      setUp(a, row_ids);
+      setUp(a, row_ids, row_order);
     }
-    fine_ = rowsOf(a);
-    fine_.prepare();
     double t1 = omp_get_wtime();
     int iterations = iterate(b, x);
     double setup_seconds = t1 - t0;
@@ -223,7 +216,7 @@ class HypreAmgSolver final : public LinearSolver {
     if (reuse && !converged) {  // the kept hierarchy did not do: afresh
       x = guess;
       const double t2 = omp_get_wtime();
-      setUp(a, row_ids);
+      setUp(a, row_ids, row_order);
       t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
       iterations = iterate(b, x);
@@ -256,14 +249,46 @@ class HypreAmgSolver final : public LinearSolver {
 
  private:
   struct Level {
-    Rows a;               // the level's operator (level 0: the system being solved, set per solve)
-    Rows p;               // interpolation from the next level (not on the coarsest)
-    OwnedRows pt;         // P^T
+    Rows a;                   // the level's operator (level 0: the system being solved, set per solve)
+    Rows p;                   // interpolation from the next level (not on the coarsest)
+    OwnedRows pt;             // P^T
+    std::vector<int> order;   // the rows in smoothing order; block b is order[n b / B .. n (b + 1) / B)
+    std::vector<int> block;   // per row: its smoother block
+    std::vector<char> inside; // per row: every column in the row's block
     Eigen::VectorXd x, b, r, old;
+
+    int blocks() const {
+      return static_cast<int>(std::clamp<std::int64_t>(a.n / kMinBlockRows, 1, kBlocks));
+    }
+    // The blocks: consecutive stretches of `rows_in_order` (of the rows without one), each smoothed in row order.
+    void setOrder(const std::vector<std::int32_t>* rows_in_order) {
+      const std::int64_t n = a.n;
+      const bool given = rows_in_order && static_cast<std::int64_t>(rows_in_order->size()) == n;
+      block.resize(n);
+      inside.resize(n);
+      const int count = blocks();
+      std::vector<std::int64_t> first(count + 1, 0);
+      for (int k = 0; k < count; ++k) {
+        first[k + 1] = n * (k + 1) / count;
+        for (std::int64_t at = n * k / count; at < first[k + 1]; ++at) block[given ? (*rows_in_order)[at] : at] = k;
+      }
+      order.resize(n);
+      for (std::int64_t at = 0; at < n; ++at) {
+        const int i = given ? (*rows_in_order)[at] : static_cast<int>(at);
+        order[first[block[i]]++] = i;
+      }
+#pragma omp parallel for schedule(static)
+      for (std::int64_t i = 0; i < n; ++i) {
+        bool in = true;
+        for (int k = a.start[i]; k < a.start[i + 1]; ++k) in = in && block[a.column[k]] == block[i];
+        inside[i] = in;
+      }
+    }
   };
 
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
-  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_ids) {
+  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_ids,
+             const std::vector<std::int32_t>* row_order) {
     forget();
     setup_matrix_ = parCsrCopy(a);
     HYPRE_BoomerAMGCreate(&amg_);
@@ -287,7 +312,7 @@ class HypreAmgSolver final : public LinearSolver {
       Level& level = levels_[l];
       if (l > 0) {
         level.a = rowsOf(hypre_ParAMGDataAArray(data)[l]);
-        level.a.prepare();
+        level.a.findDiagonal();
       }
       if (l + 1 < count) {
         level.p = rowsOf(hypre_ParAMGDataPArray(data)[l]);
@@ -299,6 +324,28 @@ class HypreAmgSolver final : public LinearSolver {
       level.b.setZero(n);
       level.r.setZero(n);
       level.old.setZero(n);
+    }
+    // Smoothing orders: level 0's is given per solve; a coarse level's follows its C-points in the order of the
+    // level above (hypre numbers the coarse points in the order of the fine rows).
+    useFine(a, row_order);
+    for (int l = 1; l < count; ++l) {
+      const Level& fine = levels_[l - 1];
+      hypre_IntArray* marker = hypre_ParAMGDataCFMarkerArray(data) ? hypre_ParAMGDataCFMarkerArray(data)[l - 1] : nullptr;
+      const std::int64_t n_fine = fine.a.n, n_coarse = levels_[l].a.n;
+      std::vector<std::int32_t> coarse_order;
+      if (marker && hypre_IntArraySize(marker) == n_fine) {
+        const HYPRE_Int* cf = hypre_IntArrayData(marker);
+        std::vector<int> coarse_of(n_fine, -1);
+        int count_c = 0;
+        for (std::int64_t i = 0; i < n_fine; ++i)
+          if (cf[i] > 0) coarse_of[i] = count_c++;
+        if (count_c == n_coarse) {
+          coarse_order.reserve(n_coarse);
+          for (int i : fine.order)
+            if (coarse_of[i] >= 0) coarse_order.push_back(coarse_of[i]);
+        }
+      }
+      levels_[l].setOrder(coarse_order.empty() ? nullptr : &coarse_order);
     }
     // The coarsest level is solved exactly (dense Cholesky; LDLT if round-off leaves it semi-definite).
     const Rows coarsest = count == 1 ? rowsOf(a) : levels_.back().a;
@@ -318,7 +365,16 @@ class HypreAmgSolver final : public LinearSolver {
     if (!coarse_ok_) coarse_ldlt_.compute(dense);
   }
 
-  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward).
+  // Level 0 is the system being solved.
+  void useFine(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_order) {
+    fine_ = rowsOf(a);
+    fine_.findDiagonal();
+    levels_[0].a = fine_;
+    levels_[0].setOrder(row_order);
+  }
+
+  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward through level.order):
+  // in parallel over the blocks, each block's rows in turn, the other blocks' values from before the sweep.
   static void smooth(Level& level, bool forward) {
     const Rows& a = level.a;
     const std::int64_t n = a.n;
@@ -326,29 +382,29 @@ class HypreAmgSolver final : public LinearSolver {
     level.old = x;
     const Eigen::VectorXd& old = level.old;
     const Eigen::VectorXd& b = level.b;
-    const int blocks = static_cast<int>(std::min<std::int64_t>(kBlocks, n));
+    const int blocks = level.blocks();
 #pragma omp parallel for schedule(static)
     for (int block = 0; block < blocks; ++block) {
       const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
       auto relax = [&](std::int64_t i) {
         const int d = a.diagonal[i];
         double s = b[i];
-        if (a.inside[i]) {  // Gauss-Seidel: the newest values
+        if (level.inside[i]) {  // Gauss-Seidel: the newest values
           for (int k = a.start[i]; k < d; ++k) s -= a.value[k] * x[a.column[k]];
           for (int k = d + 1; k < a.start[i + 1]; ++k) s -= a.value[k] * x[a.column[k]];
         } else {  // next to another block: its values from before the sweep (Jacobi between blocks)
           for (int k = a.start[i]; k < a.start[i + 1]; ++k) {
             if (k == d) continue;
             const int j = a.column[k];
-            s -= a.value[k] * ((j >= first && j < last) ? x[j] : old[j]);
+            s -= a.value[k] * (level.block[j] == block ? x[j] : old[j]);
           }
         }
         x[i] = s / a.value[d];
       };
       if (forward)
-        for (std::int64_t i = first; i < last; ++i) relax(i);
+        for (std::int64_t at = first; at < last; ++at) relax(level.order[at]);
       else
-        for (std::int64_t i = last - 1; i >= first; --i) relax(i);
+        for (std::int64_t at = last - 1; at >= first; --at) relax(level.order[at]);
     }
   }
 
@@ -379,7 +435,6 @@ class HypreAmgSolver final : public LinearSolver {
 
   // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b|. Returns the iterations.
   int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-    levels_[0].a = fine_;
     const std::int64_t n = b.size();
     r_.resize(n);
     q_.resize(n);

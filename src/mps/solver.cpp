@@ -25,7 +25,7 @@ namespace {
 // The neighbour list's skin, in particle spacings (neighbor_search.hpp): the list is rebuilt when a particle has
 // moved more than half of it since the last build. A larger skin means fewer builds but longer lists for every
 // operator to filter.
-constexpr double kNeighbourSkin = 0.3;
+constexpr double kNeighbourSkin = 0.5;
 // The AMG hierarchy of a pressure system preconditions the next steps' systems while their unknowns are the same
 // particles (linear_solver.hpp), at most this many, and while they take at most one CG iteration more.
 constexpr PreconditionerReuse kPreconditionerReuse{8, 1};
@@ -349,8 +349,40 @@ void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor
   } else if (static_cast<Eigen::Index>(particle_of.size()) == a.rows()) {
     row_ids_.assign(particle_of.begin(), particle_of.end());
   }
+  // The rows by place (cells of the neighbour search's size, row by row; a bubble's merged unknown last), from the
+  // current positions: the amg solver's smoother blocks are cut from this order.
+  {
+    const auto& position = state_.particles.position;
+    const double h = search_.radius();
+    Eigen::Matrix<std::int64_t, D, 1> cells;
+    std::int64_t count = 1;
+    for (int k = 0; k < D; ++k) {
+      cells[k] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil((domain_upper_[k] - domain_lower_[k]) / h)));
+      count *= cells[k];
+    }
+    const std::size_t rows = row_ids_.size();
+    row_cell_.resize(rows);
+    cell_start_.assign(count + 2, 0);
+    for (std::size_t r = 0; r < rows; ++r) {
+      std::int64_t cell = count;  // bubbles, and anything without a place, last
+      if (row_ids_[r] >= 0) {
+        cell = 0;
+        const Vec<D>& xr = position[row_ids_[r]];
+        for (int k = D - 1; k >= 0; --k) {
+          const double f = std::floor((xr[k] - domain_lower_[k]) / h);
+          const std::int64_t c = std::isfinite(f) ? std::clamp<std::int64_t>(static_cast<std::int64_t>(f), 0, cells[k] - 1) : 0;
+          cell = cell * cells[k] + c;
+        }
+      }
+      row_cell_[r] = cell;
+      ++cell_start_[cell + 1];
+    }
+    for (std::int64_t c = 0; c <= count; ++c) cell_start_[c + 1] += cell_start_[c];
+    row_order_.resize(rows);
+    for (std::size_t r = 0; r < rows; ++r) row_order_[cell_start_[row_cell_[r]]++] = static_cast<std::int32_t>(r);
+  }
   LinearSolver& solver = gas ? *gas_solver_ : *liquid_solver_;
-  const auto result = solver.solve(a, b, x, &row_ids_);
+  const auto result = solver.solve(a, b, x, &row_ids_, &row_order_);
   timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
   timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
   solve_seconds_ += result.setup_seconds + result.solve_seconds;
