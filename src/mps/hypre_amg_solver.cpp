@@ -35,6 +35,8 @@ constexpr int kBlocks = 8;   // smoother blocks at most (the results do not depe
 constexpr std::int64_t kMinBlockRows = 2048;  // rows per block at least (thin blocks smooth worse, and slower)
 constexpr int kChunks = 64;  // dot-product chunks
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
+// Loops over fewer rows run on one thread (a parallel region costs more than they do; the bits are the same).
+constexpr std::int64_t kParallelRows = 8192;
 
 // A ParCSR copy of `a` on MPI_COMM_SELF for hypre's setup: one diagonal block, each row's diagonal entry first.
 hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
@@ -55,9 +57,9 @@ hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor
   const int* inner = a.innerIndexPtr();
   const double* data = a.valuePtr();
   const std::int64_t n = rows;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
   for (std::int64_t r = 0; r <= n; ++r) row_start[r] = outer[r];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
   for (std::int64_t r = 0; r < n; ++r) {
     HYPRE_Int at = outer[r] + 1;
     column[outer[r]] = static_cast<HYPRE_Int>(r);
@@ -86,7 +88,7 @@ struct Rows {
 
   void findDiagonal() {
     diagonal.resize(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
     for (std::int64_t i = 0; i < n; ++i) {
       diagonal[i] = -1;
       for (int k = start[i]; k < start[i + 1]; ++k)
@@ -98,7 +100,7 @@ struct Rows {
   }
   // out = M v
   void multiply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
     for (std::int64_t i = 0; i < n; ++i) {
       double s = 0.0;
       for (int k = start[i]; k < start[i + 1]; ++k) s += value[k] * v[column[k]];
@@ -162,7 +164,7 @@ OwnedRows transposeOf(const Rows& p, std::int64_t cols) {
 double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   std::array<double, kChunks> part{};
   const std::int64_t n = a.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
   for (int c = 0; c < kChunks; ++c) {
     double s = 0.0;
     for (std::int64_t i = n * c / kChunks; i < n * (c + 1) / kChunks; ++i) s += a[i] * b[i];
@@ -277,7 +279,7 @@ class HypreAmgSolver final : public LinearSolver {
         const int i = given ? (*rows_in_order)[at] : static_cast<int>(at);
         order[first[block[i]]++] = i;
       }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) {
         bool in = true;
         for (int k = a.start[i]; k < a.start[i + 1]; ++k) in = in && block[a.column[k]] == block[i];
@@ -383,7 +385,7 @@ class HypreAmgSolver final : public LinearSolver {
     const Eigen::VectorXd& old = level.old;
     const Eigen::VectorXd& b = level.b;
     const int blocks = level.blocks();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
     for (int block = 0; block < blocks; ++block) {
       const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
       auto relax = [&](std::int64_t i) {
@@ -456,7 +458,7 @@ class HypreAmgSolver final : public LinearSolver {
     while (iterations < max_iterations_) {
       fine_.multiply(p_, q_);
       const double alpha = rz / dot(p_, q_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) {
         x[i] += alpha * p_[i];
         r_[i] -= alpha * q_[i];
@@ -468,7 +470,7 @@ class HypreAmgSolver final : public LinearSolver {
       const double rz_next = dot(r_, z_);
       const double beta = rz_next / rz;
       rz = rz_next;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
     }
     return iterations;
