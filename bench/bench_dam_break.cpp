@@ -11,6 +11,7 @@
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
 #include "mps/solver.hpp"
+#include "stage_table.hpp"
 
 using namespace mistfall;
 
@@ -45,6 +46,7 @@ void damBreak(benchmark::State& bench, const char* solver) {
   state.particles = buildParticles<2>(config);
   MpsSolver<2> mps(config, state);
   for (int i = 0; i < 5; ++i) mps.step(1.0);  // warm-up: first steps start from a perfect lattice
+  mps.stageTimer().reset();
   double pressure_seconds = 0.0, total_seconds = 0.0;
   std::int64_t steps = 0, iterations = 0;
   for (auto _ : bench) {
@@ -60,6 +62,9 @@ void damBreak(benchmark::State& bench, const char* solver) {
   bench.counters["particle_steps_per_s"] = benchmark::Counter(n * steps / total_seconds);
   bench.counters["pressure_share"] = pressure_seconds / total_seconds;
   bench.counters["ppe_iters"] = static_cast<double>(iterations) / steps;
+  recordStages(std::string("dam break ") + solver + " " + std::to_string(target / 1000) + "k threads:" +
+                   std::to_string(threads),
+               mps.stageTimer(), steps, n);
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

@@ -12,6 +12,7 @@
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
 #include "mps/solver.hpp"
+#include "stage_table.hpp"
 
 namespace mistfall {
 
@@ -29,6 +30,7 @@ inline void timeCaseSteps(benchmark::State& bench, const std::string& case_file,
     MpsSolver<2> mps(config, state);
     for (int i = 0; i < warmup; ++i) mps.step(1e9);
     particles = static_cast<double>(state.particles.size());
+    mps.stageTimer().reset();
     bench.ResumeTiming();
     for (int i = 0; i < timed; ++i) {
       const auto& r = mps.step(1e9);
@@ -39,6 +41,7 @@ inline void timeCaseSteps(benchmark::State& bench, const std::string& case_file,
       simulated += r.dt;
       ++steps;
     }
+    recordStages(case_file + " threads:" + std::to_string(threads), mps.stageTimer(), timed, particles);
   }
   bench.counters["particles"] = particles;
   bench.counters["threads"] = threads;

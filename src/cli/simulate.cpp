@@ -2,7 +2,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -105,6 +107,22 @@ DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& conf
   return row;
 }
 
+// "stage 12.3 s (45 %), ...": the stages of at least 1 % of the total, largest first.
+std::string stageSummary(const StageTimer& timer) {
+  std::vector<std::pair<double, Stage>> stages;
+  for (int k = 0; k < StageTimer::kCount; ++k) stages.emplace_back(timer.seconds(Stage(k)), Stage(k));
+  std::sort(stages.begin(), stages.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  const double total = timer.total();
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1);
+  for (const auto& [seconds, stage] : stages) {
+    if (!(total > 0.0) || seconds < 0.01 * total) continue;
+    if (s.tellp() > 0) s << ", ";
+    s << stageName(stage) << " " << seconds << " s (" << std::lround(100.0 * seconds / total) << " %)";
+  }
+  return s.str();
+}
+
 template <int D>
 int run(const CaseConfig& config, const SimulateOptions& options, const std::string& fingerprint) {
   const fs::path dir = options.out_dir;
@@ -151,6 +169,11 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   DiagnosticsRow guards;  // the guard counters since the last output
 
   auto writeOutput = [&]() {
+    // Output and texture are stages of their own: what the solver's timer counts in here (the neighbour list and
+    // the bubbles of the frame) is output's.
+    const StageTimer solver_stages = solver.stageTimer();
+    const double output_start = omp_get_wtime();
+    double texture_seconds = 0.0;
     const std::string name = frameName(state.next_frame);
     const std::vector<std::uint8_t> category = categoryBytes(classifyFrame<D>(state.particles, config));
     writeVtp<D>(dir / name, state.particles, state.time, options.ascii, &category);
@@ -160,7 +183,11 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     if (config.output.field_spacing > 0.0) {
       const auto grid = std::make_shared<const ImageData>(flowFields<D>(state, config, solver));
       writeVti(dir / fieldsName(state.next_frame), *grid, options.ascii);
-      if (texture) texture->frame<D>(frameNumber(state.next_frame), grid, state.particles, category, state.time);
+      if (texture) {
+        const double texture_start = omp_get_wtime();
+        texture->frame<D>(frameNumber(state.next_frame), grid, state.particles, category, state.time);
+        texture_seconds = omp_get_wtime() - texture_start;
+      }
     }
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
     row.gas_capped = std::exchange(guards.gas_capped, 0);
@@ -176,6 +203,9 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     bubble_log.append(state.time, bubbles);
     state.next_frame += 1;
     writeCheckpoint<D>(dir / kCheckpoint, state, fingerprint);
+    solver.stageTimer() = solver_stages;
+    solver.stageTimer().add(Stage::Output, omp_get_wtime() - output_start - texture_seconds);
+    if (texture) solver.stageTimer().add(Stage::Texture, texture_seconds);
   };
 
   if (!options.resume) writeOutput();  // frame 0: the initial state
@@ -210,6 +240,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   progress.finish();
   std::cerr << "mistfall: done, t = " << state.time << " s in " << state.step << " steps, "
             << state.next_frame << " frames in " << (dir / "frames") << "\n";
+  std::cerr << "mistfall: wall time by stage: " << stageSummary(solver.stageTimer()) << "\n";
   if (texture && !texture->rows().empty()) {
     const auto& c = texture->rows().back().counts;
     std::cerr << "mistfall: texture in " << (dir / kTexture) << ": " << c[0] << " droplets, " << c[1] << " mist, "

@@ -11,6 +11,11 @@ void lumpPressureGroups(const PressureSystem& sys, const std::vector<std::int32_
   for (std::int32_t r = 0; r < rows; ++r)
     if (group_of[sys.particle_of[r]] < 0) out.column_of_row[r] = kept++;
   out.first_group_row = kept;
+  if (groups == 0) {  // nothing to merge (no bubble): the system as it is
+    out.matrix = sys.matrix;
+    out.rhs = sys.rhs;
+    return;
+  }
   for (std::int32_t r = 0; r < rows; ++r)
     if (group_of[sys.particle_of[r]] >= 0) out.column_of_row[r] = kept + group_of[sys.particle_of[r]];
 

@@ -1,4 +1,6 @@
 // Eigen conjugate gradient with incomplete Cholesky preconditioning (the "iccg" pressure solver).
+#include <omp.h>
+
 #include <Eigen/IterativeLinearSolvers>
 
 #include "mps/linear_solver.hpp"
@@ -22,7 +24,8 @@ class EigenIccgSolver final : public LinearSolver {
   }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x) override {
+                          Eigen::VectorXd& x, const std::vector<std::int32_t>*,
+                          const std::vector<std::int32_t>*) override {
     LinearSolveResult result;
     if (a.rows() == 0) {
       result.converged = true;
@@ -33,7 +36,10 @@ class EigenIccgSolver final : public LinearSolver {
       result.converged = true;
       return result;
     }
+    const double t0 = omp_get_wtime();
     cg_.compute(a);
+    const double t1 = omp_get_wtime();
+    result.setup_seconds = t1 - t0;
     if (cg_.info() != Eigen::Success) {
       result.converged = false;
       result.relative_residual = relativeResidual(a, b, x);
@@ -43,6 +49,7 @@ class EigenIccgSolver final : public LinearSolver {
     result.iterations = static_cast<int>(cg_.iterations());
     result.relative_residual = relativeResidual(a, b, x);
     result.converged = cg_.info() == Eigen::Success;
+    result.solve_seconds = omp_get_wtime() - t1;
     return result;
   }
 
@@ -56,12 +63,13 @@ class EigenIccgSolver final : public LinearSolver {
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> makeHypreAmgSolver(double tolerance, int max_iterations);
+std::unique_ptr<LinearSolver> makeHypreAmgSolver(double tolerance, int max_iterations, PreconditionerReuse reuse);
 
-std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations) {
+std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations,
+                                               PreconditionerReuse reuse) {
   switch (kind) {
     case PressureSolverKind::EigenIccg: return std::make_unique<EigenIccgSolver>(tolerance, max_iterations);
-    case PressureSolverKind::HypreAmg: return makeHypreAmgSolver(tolerance, max_iterations);
+    case PressureSolverKind::HypreAmg: return makeHypreAmgSolver(tolerance, max_iterations, reuse);
   }
   return nullptr;
 }

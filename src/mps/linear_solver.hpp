@@ -4,7 +4,9 @@
 #pragma once
 
 #include <Eigen/Sparse>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "case/case_config.hpp"
 
@@ -14,18 +16,39 @@ struct LinearSolveResult {
   int iterations = 0;
   double relative_residual = 0.0;  // |b - A x| / |b|  (0 when b = 0)
   bool converged = false;
+  double setup_seconds = 0.0;  // handing the matrix over and building the preconditioner (wall)
+  double solve_seconds = 0.0;  // the iterations and the residual check (wall)
+  bool reused = false;         // the preconditioner of an earlier system was used (no setup)
 };
 
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // x holds the initial guess on entry and the solution on exit.
+  // x holds the initial guess on entry and the solution on exit. `row_ids` (optional) names what each row is
+  // (e.g. the particle of the unknown): a solver may precondition this system with what it built for an earlier
+  // one whose rows were the same (see reuse below); without ids it never does. `row_order` (optional): every row
+  // once, in an order that keeps coupled rows close (e.g. the particles sorted by place); the amg solver cuts its
+  // smoother's blocks from it (the result depends on it, not on the thread count).
   virtual LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                                  Eigen::VectorXd& x) = 0;
+                                  Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids = nullptr,
+                                  const std::vector<std::int32_t>* row_order = nullptr) = 0;
+  // Drops whatever is kept from earlier systems: the next solve starts afresh. The simulation calls it at every
+  // checkpoint, so that a resumed run meets the same state as the unbroken one.
+  virtual void forget() {}
   virtual const char* name() const = 0;
 };
 
-std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations);
+// Reuse of the preconditioner (amg): while the rows stay the same (same ids, in the same order), the AMG hierarchy
+// of the last set-up system preconditions the next systems (the fine level always uses the new matrix, so the
+// tolerance is met; only the number of iterations may grow), for at most `max_reuse` systems and while the
+// iterations stay within `slack` of those after the set-up. max_reuse = 0: a new hierarchy for every system.
+struct PreconditionerReuse {
+  int max_reuse = 0;
+  int slack = 1;
+};
+
+std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations,
+                                               PreconditionerReuse reuse = {});
 
 // Relative residual |b - A x| / |b| computed directly (0 when b = 0 and x solves it).
 double relativeResidual(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,

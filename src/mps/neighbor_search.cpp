@@ -1,5 +1,7 @@
 #include "mps/neighbor_search.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,9 +9,10 @@
 namespace mistfall {
 
 template <int D>
-NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius)
-    : radius_(radius), cell_size_(radius) {
+NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin)
+    : radius_(radius), skin_(skin), cell_size_(radius + skin) {
   if (!(radius > 0.0)) throw std::invalid_argument("neighbour search radius must be positive");
+  if (!(skin >= 0.0)) throw std::invalid_argument("neighbour search skin must not be negative");
   // One spare cell on each side so that neighbours of boundary cells never fall off the grid.
   lower_ = lower.array() - cell_size_;
   for (int k = 0; k < D; ++k) {
@@ -41,12 +44,14 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   std::int64_t ncells = 1;
   for (int k = 0; k < D; ++k) ncells *= cells_[k];
+  ++builds_;
 
-  // Counting sort of particles into cells.
-  particle_cell_.assign(n, -1);
+  // Counting sort of particles into cells (each cell's particles in ascending index order).
+  particle_cell_.resize(n);
   cell_start_.assign(ncells + 1, 0);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
+    particle_cell_[i] = -1;
     if (!std::isfinite(position[i].squaredNorm())) continue;
     if (isActive(kind[i])) particle_cell_[i] = cellIndex(cellOf(position[i]));
   }
@@ -60,21 +65,23 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
       if (particle_cell_[i] >= 0) sorted_[fill[particle_cell_[i]]++] = static_cast<std::int32_t>(i);
   }
 
-  const double r2 = radius_ * radius_;
-  // Visits every j within the radius of particle i.
-  auto forEachNeighbour = [&](std::int64_t i, auto&& visit) {
+  const double reach = radius_ + skin_;
+  const double r2 = reach * reach;
+  // Appends every j within the reach of particle i to `list`.
+  auto gather = [&](std::int64_t i, std::vector<std::int32_t>& list) {
     const auto c = cellOf(position[i]);
     Eigen::Matrix<std::int64_t, D, 1> lo, hi;
     for (int k = 0; k < D; ++k) {
       lo[k] = std::max<std::int64_t>(c[k] - 1, 0);
       hi[k] = std::min<std::int64_t>(c[k] + 1, cells_[k] - 1);
     }
+    const Vec<D> xi = position[i];
     Eigen::Matrix<std::int64_t, D, 1> cc = lo;
     while (true) {
       const std::int64_t cell = cellIndex(cc);
       for (std::int64_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
         const std::int32_t j = sorted_[s];
-        if (j != i && (position[j] - position[i]).squaredNorm() < r2) visit(j);
+        if (j != i && (position[j] - xi).squaredNorm() < r2) list.push_back(j);
       }
       int k = 0;
       for (; k < D; ++k) {
@@ -85,22 +92,53 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
     }
   };
 
-  out.offsets.assign(n + 1, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (particle_cell_[i] < 0) continue;
-    std::int64_t count = 0;
-    forEachNeighbour(i, [&](std::int32_t) { ++count; });
-    out.offsets[i + 1] = count;
+  // One pass: each thread gathers the lists of a contiguous block of particles into its own buffer (each list
+  // sorted by index), then the blocks are copied into place in particle order.
+  out.offsets.resize(n + 1);
+  out.offsets[0] = 0;
+  thread_lists_.resize(std::max(1, omp_get_max_threads()));
+#pragma omp parallel
+  {
+    const std::int64_t t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const std::int64_t first = n * t / nt, last = n * (t + 1) / nt;
+    auto& list = thread_lists_[t];
+    list.clear();
+    for (std::int64_t i = first; i < last; ++i) {
+      const std::size_t start = list.size();
+      if (particle_cell_[i] >= 0) {
+        gather(i, list);
+        std::sort(list.begin() + static_cast<std::ptrdiff_t>(start), list.end());
+      }
+      out.offsets[i + 1] = static_cast<std::int64_t>(list.size() - start);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::int64_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
+      out.indices.resize(out.offsets[n]);
+    }
+    if (first < last) std::copy(list.begin(), list.end(), out.indices.begin() + out.offsets[first]);
   }
-  for (std::int64_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
-  out.indices.resize(out.offsets[n]);
-#pragma omp parallel for schedule(dynamic, 256)
+  built_position_.assign(position.begin(), position.end());
+}
+
+template <int D>
+bool NeighborSearch<D>::covers(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind) const {
+  const std::int64_t n = static_cast<std::int64_t>(position.size());
+  if (builds_ == 0 || static_cast<std::int64_t>(built_position_.size()) != n ||
+      static_cast<std::int64_t>(particle_cell_.size()) != n)
+    return false;
+  // Strictly below half the skin, with a margin for the round-off of the distances.
+  const double limit = 0.5 * skin_ * (1.0 - 1e-9);
+  const double limit2 = limit * limit;
+  bool ok = true;
+#pragma omp parallel for schedule(static) reduction(&& : ok)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (particle_cell_[i] < 0) continue;
-    std::int64_t at = out.offsets[i];
-    forEachNeighbour(i, [&](std::int32_t j) { out.indices[at++] = j; });
+    const bool listed = particle_cell_[i] >= 0;
+    const bool active = isActive(kind[i]) && std::isfinite(position[i].squaredNorm());
+    ok = ok && listed == active && (!active || (position[i] - built_position_[i]).squaredNorm() <= limit2);
   }
+  return ok;
 }
 
 template class NeighborSearch<2>;

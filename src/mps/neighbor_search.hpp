@@ -1,7 +1,13 @@
-// Cell-linked-list neighbour search. Particles are binned into cubic cells of edge >= radius; each
-// particle's neighbours (all j != i with |r_j - r_i| < radius) are gathered from the 3^D surrounding
-// cells into a compressed list (CSR). Rebuilt every step; OpenMP-parallel over particles; the result
-// does not depend on the thread count (each particle's list is in cell-then-index order).
+// Cell-linked-list neighbour search. Particles are binned into cubic cells of edge >= radius + skin; each
+// particle's neighbours (all j != i with |r_j - r_i| < radius + skin) are gathered from the 3^D surrounding cells
+// into a compressed list (CSR), each particle's list in ascending index order. OpenMP-parallel over particles; the
+// result does not depend on the thread count.
+//
+// The skin (Verlet list): a list built with a skin holds every pair that is within `radius` now as long as no
+// particle has moved more than skin / 2 since the build (covers() checks it). Every operator filters the list by
+// its own radius (<= radius) and visits the neighbours in index order, so its result is the same, bit for bit,
+// whichever list it is given, as long as the list covers the positions: an older list with a skin and a fresh one
+// give identical runs, and a resumed run (which starts with a fresh list) stays bit-identical to an unbroken one.
 #pragma once
 
 #include <cstdint>
@@ -24,12 +30,18 @@ template <int D>
 class NeighborSearch {
  public:
   // lower/upper bound the region where particles may be; particles marked Escaped are ignored.
-  NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius);
+  NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin = 0.0);
 
-  // Rebuilds the cells and the neighbour list for the given positions.
+  // Rebuilds the cells and the neighbour list for the given positions (and remembers them, for covers()).
   void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind, NeighborList& out);
 
+  // Whether the last list built still holds every pair within radius() at these positions: the same particles,
+  // the same of them active, none moved more than skin / 2 since the build (with skin 0: none moved at all).
+  bool covers(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind) const;
+
   double radius() const { return radius_; }
+  double skin() const { return skin_; }
+  std::int64_t builds() const { return builds_; }
 
  private:
   std::int64_t cellIndex(const Eigen::Matrix<std::int64_t, D, 1>& c) const;
@@ -37,11 +49,15 @@ class NeighborSearch {
 
   Vec<D> lower_;
   double radius_;
+  double skin_;
   double cell_size_;
   Eigen::Matrix<std::int64_t, D, 1> cells_;
   std::vector<std::int64_t> cell_start_;     // size ncells + 1
   std::vector<std::int32_t> sorted_;         // particle indices grouped by cell
   std::vector<std::int64_t> particle_cell_;  // cell of each particle, -1 when ignored
+  std::vector<std::vector<std::int32_t>> thread_lists_;  // per thread: the lists of its block of particles
+  std::vector<Vec<D>> built_position_;       // positions at the last build
+  std::int64_t builds_ = 0;
 };
 
 }  // namespace mistfall

@@ -71,8 +71,10 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
 #pragma omp parallel for schedule(static)
   for (std::int64_t r = 0; r < rows; ++r) {
     const auto i = sys.particle_of[r];
+    // Neighbour lists are in ascending index order and rows are numbered in particle order, so the columns come
+    // sorted (as Eigen requires); the diagonal goes in before the first column above it.
     std::int64_t at = start[r];
-    const std::int64_t diagonal_at = at++;
+    std::int64_t diagonal_at = -1;
     double diagonal = 0.0;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
@@ -81,24 +83,17 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
       if (w <= 0.0) continue;
       diagonal += factor * w;
       if (sys.row_of[j] >= 0) {
+        if (diagonal_at < 0 && j > i) diagonal_at = at++;
         inner[at] = sys.row_of[j];
         value[at] = -factor * w;
         ++at;
       }
     }
+    if (diagonal_at < 0) diagonal_at = at++;
     const double ci = problem.sound_speed[i];
     if (std::isfinite(ci)) diagonal += 1.0 / (dt * dt * ci * ci);
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
-    // Neighbour lists are sorted by cell, not by index: sort the row's columns (Eigen requires it).
-    std::vector<std::pair<int, double>> entries;
-    entries.reserve(at - start[r]);
-    for (std::int64_t e = start[r]; e < at; ++e) entries.emplace_back(inner[e], value[e]);
-    std::sort(entries.begin(), entries.end());
-    for (std::int64_t e = start[r]; e < at; ++e) {
-      inner[e] = entries[e - start[r]].first;
-      value[e] = entries[e - start[r]].second;
-    }
     const double compression = (number_density[i] - c.n0) / c.n0;
     if (source.kind == PressureSource::Standard) {
       sys.rhs[r] = rho / (dt * dt) * compression;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/bubble_pressure.hpp"
@@ -21,6 +22,14 @@
 namespace mistfall {
 
 namespace {
+// The neighbour list's skin, in particle spacings (neighbor_search.hpp): the list is rebuilt when a particle has
+// moved more than half of it since the last build. A larger skin means fewer builds but longer lists for every
+// operator to filter.
+constexpr double kNeighbourSkin = 0.5;
+// The AMG hierarchy of a pressure system preconditions the next steps' systems while their unknowns are the same
+// particles (linear_solver.hpp), at most this many, and while they take at most one CG iteration more.
+constexpr PreconditionerReuse kPreconditionerReuse{8, 1};
+
 template <int D>
 Vec<D> firstComponents(const std::array<double, 3>& a) {
   Vec<D> v;
@@ -39,9 +48,12 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
       gravity_(firstComponents<D>(config.physics.gravity)),
       domain_lower_(firstComponents<D>(config.domain.min)),
       domain_upper_(firstComponents<D>(config.domain.max)),
-      search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian)),
-      linear_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
-                                      config.numerics.solver_max_iterations)),
+      search_(domain_lower_, domain_upper_, std::max(constants_.re_number_density, constants_.re_laplacian),
+              kNeighbourSkin * constants_.l0),
+      liquid_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
+                                      config.numerics.solver_max_iterations, kPreconditionerReuse)),
+      gas_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
+                                   config.numerics.solver_max_iterations, kPreconditionerReuse)),
       full_neighbour_count_(latticeNeighbourCount(D, constants_.re_number_density, constants_.l0)) {
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
@@ -70,44 +82,85 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
   buildNeighbours();
-  findBubbles();
-  const double dt = chooseTimeStepFor(until);
-  predict(dt);
-  collide(dt);
-  report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
-  state_.created += report_.created;
-  if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
-    const std::size_t n = state_.particles.size();
-    roles_.extendForLiquid(n);
-    regions_.region_of.resize(n, -1);
-    regions_.enclosed_particle.resize(n, 0);
+  {
+    auto t = timer_.scope(Stage::GasRegions);
+    findBubbles();
+  }
+  double dt = 0.0;
+  {
+    auto t = timer_.scope(Stage::TimeStep);
+    dt = chooseTimeStepFor(until);
+  }
+  {
+    auto t = timer_.scope(Stage::Predict);
+    predict(dt);
+  }
+  {
+    auto t = timer_.scope(Stage::Collision);
+    collide(dt);
+  }
+  {
+    auto t = timer_.scope(Stage::OpenBoundaries);
+    report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
+    state_.created += report_.created;
+    if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
+      const std::size_t n = state_.particles.size();
+      roles_.extendForLiquid(n);
+      regions_.region_of.resize(n, -1);
+      regions_.enclosed_particle.resize(n, 0);
+    }
   }
   buildNeighbours();
   // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
-  computeLiquidNumberDensity();
+  {
+    auto t = timer_.scope(Stage::NumberDensity);
+    computeLiquidNumberDensity();
+  }
   double tp = omp_get_wtime();
-  solveLiquidPressure(dt);
-  setLiquidWallPressure();
-  report_.seconds_pressure = omp_get_wtime() - tp;
-  correctLiquid(dt);
-  if (roles_.enclosed_count > 0) moveBubbleGas(dt);
+  solve_seconds_ = 0.0;
+  solveLiquidPressure(dt);  // assembly, then the solve (timed in solveLinear)
+  timer_.add(Stage::LiquidAssembly, omp_get_wtime() - tp - solve_seconds_);
+  {
+    auto t = timer_.scope(Stage::LiquidCorrection);
+    setLiquidWallPressure();
+    report_.seconds_pressure = omp_get_wtime() - tp;
+    correctLiquid(dt);
+  }
+  if (roles_.enclosed_count > 0) {
+    auto t = timer_.scope(Stage::BubbleGas);
+    moveBubbleGas(dt);
+  }
   // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
   if (roles_.gas_count > 0) {
     buildNeighbours();
     tp = omp_get_wtime();
+    solve_seconds_ = 0.0;
     solveGasPressure(dt);
-    report_.seconds_pressure += omp_get_wtime() - tp;
+    const double gas_seconds = omp_get_wtime() - tp;
+    timer_.add(Stage::GasAssembly, gas_seconds - solve_seconds_);
+    report_.seconds_pressure += gas_seconds;
+    auto t = timer_.scope(Stage::GasCorrection);
     correctGas(dt);
     riseEntrainedGas(dt);
   }
-  markEscaped();
-  report_.removed = removeOutflow<D>(state_.particles, config_);
-  state_.removed += report_.removed;
-  state_.time = (until - state_.time <= dt) ? until : state_.time + dt;
+  {
+    auto t = timer_.scope(Stage::OpenBoundaries);
+    markEscaped();
+    report_.removed = removeOutflow<D>(state_.particles, config_);
+    state_.removed += report_.removed;
+  }
+  const bool reached = until - state_.time <= dt;
+  state_.time = reached ? until : state_.time + dt;
+  // An output time, where a checkpoint may be written: a run resumed from it starts without what the solver keeps
+  // from step to step beyond the state, so the unbroken run drops it here too (bit-identical resume).
+  if (reached) forgetReusedState();
   state_.step += 1;
   state_.dt = dt;
   report_.dt = dt;
-  checkHealth(dt);
+  {
+    auto t = timer_.scope(Stage::Health);
+    checkHealth(dt);
+  }
   report_.seconds_total = omp_get_wtime() - t0;
   return report_;
 }
@@ -181,9 +234,13 @@ bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& 
   return count >= fraction * full_neighbour_count_;
 }
 
+// The neighbour list for the current positions: the last one while it still covers them (neighbor_search.hpp:
+// the results are the same, bit for bit, as with a fresh list), else a new one.
 template <int D>
 void MpsSolver<D>::buildNeighbours() {
-  search_.build(state_.particles.position, state_.particles.kind, neighbours_);
+  auto t = timer_.scope(Stage::Neighbours);
+  const auto& p = state_.particles;
+  if (!search_.covers(p.position, p.kind)) search_.build(p.position, p.kind, neighbours_);
 }
 
 template <int D>
@@ -280,16 +337,71 @@ void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* whi
 template <int D>
 void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                                Eigen::VectorXd& x, const char* which, int& iterations) {
-  const auto result = linear_solver_->solve(a, b, x);
+  const bool gas = std::string_view(which) == "gas";
+  // What each row is: the particle of the unknown (system_), or -1 - g for bubble g's merged unknown (lumped_).
+  row_ids_.assign(static_cast<std::size_t>(a.rows()), -1);
+  const auto& particle_of = system_.particle_of;
+  if (!gas && static_cast<Eigen::Index>(lumped_.column_of_row.size()) == static_cast<Eigen::Index>(particle_of.size()) &&
+      lumped_.matrix.rows() == a.rows()) {
+    for (std::size_t r = 0; r < particle_of.size(); ++r) {
+      const auto column = lumped_.column_of_row[r];
+      row_ids_[column] = column < lumped_.first_group_row ? particle_of[r] : -1 - (column - lumped_.first_group_row);
+    }
+  } else if (static_cast<Eigen::Index>(particle_of.size()) == a.rows()) {
+    row_ids_.assign(particle_of.begin(), particle_of.end());
+  }
+  // The rows by place (cells of the neighbour search's size, row by row; a bubble's merged unknown last), from the
+  // current positions: the amg solver's smoother blocks are cut from this order.
+  {
+    const auto& position = state_.particles.position;
+    const double h = search_.radius();
+    Eigen::Matrix<std::int64_t, D, 1> cells;
+    std::int64_t count = 1;
+    for (int k = 0; k < D; ++k) {
+      cells[k] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil((domain_upper_[k] - domain_lower_[k]) / h)));
+      count *= cells[k];
+    }
+    const std::size_t rows = row_ids_.size();
+    row_cell_.resize(rows);
+    cell_start_.assign(count + 2, 0);
+    for (std::size_t r = 0; r < rows; ++r) {
+      std::int64_t cell = count;  // bubbles, and anything without a place, last
+      if (row_ids_[r] >= 0) {
+        cell = 0;
+        const Vec<D>& xr = position[row_ids_[r]];
+        for (int k = D - 1; k >= 0; --k) {
+          const double f = std::floor((xr[k] - domain_lower_[k]) / h);
+          const std::int64_t c = std::isfinite(f) ? std::clamp<std::int64_t>(static_cast<std::int64_t>(f), 0, cells[k] - 1) : 0;
+          cell = cell * cells[k] + c;
+        }
+      }
+      row_cell_[r] = cell;
+      ++cell_start_[cell + 1];
+    }
+    for (std::int64_t c = 0; c <= count; ++c) cell_start_[c + 1] += cell_start_[c];
+    row_order_.resize(rows);
+    for (std::size_t r = 0; r < rows; ++r) row_order_[cell_start_[row_cell_[r]]++] = static_cast<std::int32_t>(r);
+  }
+  LinearSolver& solver = gas ? *gas_solver_ : *liquid_solver_;
+  const auto result = solver.solve(a, b, x, &row_ids_, &row_order_);
+  timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
+  timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
+  solve_seconds_ += result.setup_seconds + result.solve_seconds;
   iterations = result.iterations;
   if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
     std::ostringstream msg;
-    msg << which << " pressure solve (" << linear_solver_->name() << ") did not converge: relative residual "
+    msg << which << " pressure solve (" << solver.name() << ") did not converge: relative residual "
         << result.relative_residual << " after " << result.iterations << " iterations ("
         << "numerics.solver_tolerance = " << config_.numerics.solver_tolerance << ")";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }
   report_.ppe_residual = std::max(report_.ppe_residual, result.relative_residual);
+}
+
+template <int D>
+void MpsSolver<D>::forgetReusedState() {
+  liquid_solver_->forget();
+  gas_solver_->forget();
 }
 
 template <int D>

@@ -26,6 +26,7 @@
 #include "mps/pressure_poisson.hpp"
 #include "mps/reference_density.hpp"
 #include "mps/simulation_state.hpp"
+#include "mps/stage_timer.hpp"
 
 namespace mistfall {
 
@@ -72,6 +73,14 @@ class MpsSolver {
   const StepReport& step(double until);
 
   const MpsConstants& constants() const { return constants_; }
+  // Drops what the solver keeps from step to step beyond the state (the pressure solves' AMG hierarchies): the
+  // next step starts as a fresh solver would. step() calls it whenever it reaches `until` (an output time, where
+  // checkpoints are written), so that a resumed run is bit-identical to the unbroken one. (The neighbour list is
+  // kept: it gives the same results as a fresh one.)
+  void forgetReusedState();
+  // Wall seconds per stage of every step since construction (or since the caller reset it).
+  StageTimer& stageTimer() { return timer_; }
+  const StageTimer& stageTimer() const { return timer_; }
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   double particleMass(std::size_t i) const;
@@ -125,9 +134,14 @@ class MpsSolver {
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;
-  std::unique_ptr<LinearSolver> linear_solver_;
+  std::unique_ptr<LinearSolver> liquid_solver_, gas_solver_;
+  std::vector<std::int32_t> row_ids_;    // what each row of the system being solved is (solveLinear)
+  std::vector<std::int32_t> row_order_;  // its rows by place (solveLinear)
+  std::vector<std::int64_t> row_cell_, cell_start_;
   StepReport report_;
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
+  StageTimer timer_;
+  double solve_seconds_ = 0.0;  // setup + solve seconds of the linear solves since the stage began
 };
 
 }  // namespace mistfall

@@ -110,6 +110,7 @@ template <int D>
 void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, double rho, bool clamp) const {
   const auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double reach2 = search_.radius() * search_.radius();
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Dummy) continue;
@@ -119,7 +120,7 @@ void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>& pressure, doubl
       const auto j = neighbours_.indices[s];
       if (p.kind[j] != ParticleKind::Wall) continue;
       const double r2 = (p.position[j] - p.position[i]).squaredNorm();
-      if (r2 < best) best = r2, nearest = j;
+      if (r2 < best && r2 < reach2) best = r2, nearest = j;  // within the search radius (the list has a skin)
     }
     const double extrapolated =
         nearest < 0 ? 0.0 : pressure[nearest] + rho * gravity_.dot(p.position[i] - p.position[nearest]);
