@@ -3,6 +3,9 @@
 // is accounted for (created - removed = change of the water in the domain); the case-file checks.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <set>
+
 #include <cmath>
 
 #include "case/case_file.hpp"
@@ -181,6 +184,41 @@ TEST(OpenBoundaries, ChannelDeliversTheDischargeAndEveryParticleIsAccountedFor) 
             r.state.created - r.state.removed);
   for (std::size_t i = 0; i < r.state.particles.size(); ++i)
     if (r.state.particles.kind[i] == ParticleKind::Fluid) EXPECT_LT(r.state.particles.position[i][0], 0.42);
+}
+
+// Particle ids (particles.hpp): unique at every step, kept by a particle for its life through the inflow's
+// appending and the outflow's compaction (it moves at most its speed times dt), new ones above every id seen before,
+// and none of a removed particle comes back.
+TEST(OpenBoundaries, ParticleIdsAreUniqueAndKeptThroughInflowAndOutflow) {
+  ChannelRun r(channelCase());
+  std::map<std::uint64_t, Vec<2>> before;
+  std::set<std::uint64_t> gone;
+  std::uint64_t highest = 0;
+  const std::size_t initial = r.state.particles.size();
+  EXPECT_EQ(r.state.particles.next_id, initial);
+  while (r.state.time < 1.5 - 1e-12) {
+    const auto& p = r.state.particles;
+    before.clear();
+    for (std::size_t i = 0; i < p.size(); ++i) before[p.id[i]] = p.position[i];
+    for (const auto& [id, x] : before) highest = std::max(highest, id);
+    const auto& report = r.solver->step(1.5);
+    std::set<std::uint64_t> now;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      ASSERT_TRUE(now.insert(p.id[i]).second) << "id " << p.id[i] << " twice at t = " << r.state.time;
+      ASSERT_EQ(gone.count(p.id[i]), 0u) << "a removed particle's id came back";
+      const auto it = before.find(p.id[i]);
+      if (it == before.end()) {
+        EXPECT_GT(p.id[i], highest) << "a new particle gets a new id";
+      } else {
+        const double moved = (p.position[i] - it->second).norm();
+        EXPECT_LE(moved, report.dt * (p.velocity[i].norm() + 50.0)) << "id " << p.id[i] << " jumped";
+      }
+    }
+    for (const auto& [id, x] : before)
+      if (!now.count(id)) gone.insert(id);
+  }
+  EXPECT_GT(gone.size(), 0u) << "the outflow removed particles";
+  EXPECT_EQ(r.state.particles.next_id, initial + static_cast<std::uint64_t>(r.state.created));
 }
 
 TEST(OpenBoundaries, CaseFileErrorsNameTheKeyAndTheRule) {

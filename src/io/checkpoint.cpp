@@ -21,7 +21,7 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 3;  // 2 added the enclosed flags, 3 the case fingerprint
+constexpr std::uint32_t kVersion = 4;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids
 constexpr std::uint32_t kOldestVersion = 2;  // still read (no fingerprint)
 constexpr std::uint64_t kMaxFingerprint = 1 << 24;
 
@@ -36,6 +36,7 @@ struct Header {
   std::int64_t created = 0;
   std::int64_t removed = 0;
   std::string fingerprint;  // version 3: the case fingerprint (case/case_fingerprint.hpp)
+  std::uint64_t next_id = 0;  // version 4: the id of the next particle made (older files: the particle count)
 };
 // (Serialized field by field, so struct padding never reaches the file.)
 
@@ -127,6 +128,7 @@ Header readHeader(Reader& r, const std::filesystem::path& file) {
     h.fingerprint.resize(length);
     if (length) r.raw(h.fingerprint.data(), length);
   }
+  h.next_id = h.version >= 4 ? r.value<std::uint64_t>() : h.count;
   return h;
 }
 
@@ -143,7 +145,7 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
   const Particles<D>& p = s.particles;
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.pressure.size() != n || p.number_density.size() != n || p.kind.size() != n ||
-      p.phase.size() != n || p.enclosed.size() != n) {
+      p.phase.size() != n || p.enclosed.size() != n || p.id.size() != n) {
     throw std::runtime_error("writeCheckpoint '" + file.string() + "': particle arrays have different lengths");
   }
   writeFileAtomically(file, [&](std::ostream& os) {
@@ -170,6 +172,7 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
     const auto length = static_cast<std::uint64_t>(fingerprint.size());
     w.value(length);
     if (length) w.raw(fingerprint.data(), fingerprint.size());
+    w.value(p.next_id);
     if (n) {
       w.raw(p.position.data(), n * sizeof(Vec<D>));
       w.raw(p.velocity.data(), n * sizeof(Vec<D>));
@@ -178,6 +181,7 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
       w.raw(p.kind.data(), n);
       w.raw(p.phase.data(), n);
       w.raw(p.enclosed.data(), n);
+      w.raw(p.id.data(), n * sizeof(std::uint64_t));
     }
     const std::uint64_t sum = w.checksum();
     os.write(reinterpret_cast<const char*>(&sum), sizeof(sum));
@@ -199,7 +203,7 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
     fail(file, "checkpoint is " + std::to_string(h.dimension) + "D, case is " + std::to_string(D) + "D");
   }
   // Check the size before allocating, so a corrupt count cannot ask for absurd memory.
-  const std::uint64_t per_particle = 2 * sizeof(Vec<D>) + 2 * sizeof(double) + 3;
+  const std::uint64_t per_particle = 2 * sizeof(Vec<D>) + 2 * sizeof(double) + 3 + (h.version >= 4 ? 8 : 0);
   const std::uint64_t trailer = sizeof(std::uint64_t) + sizeof(kEndMarker);
   if (r.remaining() < trailer || h.count > (r.remaining() - trailer) / per_particle) {
     fail(file, "file is truncated (header says " + std::to_string(h.count) + " particles)");
@@ -220,6 +224,13 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
   readVector(r, p.kind, n);
   readVector(r, p.phase, n);
   readVector(r, p.enclosed, n);
+  if (h.version >= 4) {
+    readVector(r, p.id, n);
+  } else {  // before ids: numbered in the checkpoint's order
+    p.id.resize(n);
+    for (std::size_t i = 0; i < n; ++i) p.id[i] = i;
+  }
+  p.next_id = h.next_id;
   const std::uint64_t expected = r.checksum();
   const auto stored = r.value<std::uint64_t>();
   char end[sizeof(kEndMarker)];
@@ -230,8 +241,8 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
   for (std::size_t i = 0; i < n; ++i) {
     if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Inflow) ||
         static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas) ||
-        (p.enclosed[i] != 0 && p.enclosed[i] != 1)) {
-      fail(file, "invalid particle kind/phase/enclosed value");
+        (p.enclosed[i] != 0 && p.enclosed[i] != 1) || p.id[i] >= p.next_id) {
+      fail(file, "invalid particle kind/phase/enclosed value or id");
     }
   }
   return s;

@@ -3,6 +3,7 @@
 
 #include "io/errors.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cstring>
@@ -265,6 +266,7 @@ void writeVtp(const std::filesystem::path& file, const Particles<D>& p, double t
       {"phase", 1, asBytes(p.phase)},
       {"kind", 1, asBytes(p.kind)},
       {"enclosed", 1, asBytes(p.enclosed)},
+      {"id", 1, std::vector<std::int64_t>(p.id.begin(), p.id.end())},
       {"velocity", 3, padTo3<D>(p.velocity)},
       {"pressure", 1, p.pressure},
       {"number_density", 1, p.number_density},
@@ -338,6 +340,9 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
                               : std::vector<std::uint8_t>(n, 0);
     frame.category = d.arrays.count("category") ? d.decode<std::uint8_t>("category", 1, n)
                                                  : std::vector<std::uint8_t>();
+    // "id" is absent from frames written before it existed: numbered 0, 1, ... in the frame's order.
+    std::vector<std::int64_t> ids;
+    if (d.arrays.count("id")) ids = d.decode<std::int64_t>("id", 1, n);
     d.decode<std::int64_t>("connectivity", 1, n);
     d.decode<std::int64_t>("offsets", 1, n);
 
@@ -349,6 +354,12 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
     p.kind.resize(n);
     p.phase.resize(n);
     p.enclosed.assign(enclosed.begin(), enclosed.end());
+    p.id.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!ids.empty() && ids[i] < 0) fail(file, "invalid particle id");
+      p.id[i] = ids.empty() ? i : static_cast<std::uint64_t>(ids[i]);
+      p.next_id = std::max(p.next_id, p.id[i] + 1);
+    }
     for (std::size_t i = 0; i < n; ++i) {
       for (int k = 0; k < D; ++k) {
         p.position[i][k] = pos3[3 * i + k];

@@ -30,6 +30,11 @@ struct Particles {
   std::vector<ParticleKind> kind;
   std::vector<Phase> phase;
   std::vector<char> enclosed;  // delta_gl of eq. (7) at the last step: 1 for gas of a region enclosed in liquid
+  // A particle's id: unique over the run and kept for its life (0, 1, ... in the order particles are made: the case's
+  // lattice, then each particle an inflow creates; an outflow's removal never reuses one). The frames carry it (array
+  // `id`), so VFX tools and the texture stage can follow a particle.
+  std::vector<std::uint64_t> id;
+  std::uint64_t next_id = 0;  // the id of the next particle made
 
   std::size_t size() const { return position.size(); }
 
@@ -41,6 +46,7 @@ struct Particles {
     kind.push_back(k);
     phase.push_back(ph);
     enclosed.push_back(0);
+    id.push_back(next_id++);
   }
 
   std::size_t count(ParticleKind k) const {
@@ -50,7 +56,7 @@ struct Particles {
   }
   // Removes the particles with remove[i] != 0 from every array, keeping the order of the others.
   void erase(const std::vector<char>& remove) {
-    eraseMarked(remove, position, velocity, pressure, number_density, kind, phase, enclosed);
+    eraseMarked(remove, position, velocity, pressure, number_density, kind, phase, enclosed, id);
   }
   std::size_t count(ParticleKind k, Phase ph) const {
     std::size_t c = 0;

@@ -3,7 +3,9 @@
 //   buildNeighbours -> findBubbles (delta_gl) -> chooseTimeStep -> predict (viscosity + gravity, explicit)
 //   -> collide -> advanceInflows (open_boundaries.hpp) -> buildNeighbours at r*
 //   -> liquid system: numberDensity n* -> solveLiquidPressure (eq. (9), one unknown per bubble with eq. (17)'s
-//      shift) -> extrapolateDummyPressure -> correctLiquid (-dt/rho grad p)
+//      shift; numerics.scheme = "stabilised": stabilisedPressureTerms, solver_liquid_stabilised.cpp)
+//      -> setLiquidWallPressure (paper: dummies extrapolated; stabilised: mirrored walls averaged)
+//      -> correctLiquid (-dt/rho grad p; stabilised: the corrected gradient)
 //   -> moveBubbleGas (the bubbles' gas takes the liquid's velocity, extended into the bubble)
 //   -> gas system (when gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
 //      -> correctGas (open gas: velocity and position; bubble gas: position only)

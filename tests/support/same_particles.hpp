@@ -1,4 +1,4 @@
-// Test helper: two particle sets are bit-for-bit equal (positions, velocities, pressures, densities, kinds).
+// Test helper: two particle sets are bit-for-bit equal (positions, velocities, pressures, densities, kinds, ids).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -20,6 +20,8 @@ void expectSameParticles(const Particles<D>& a, const Particles<D>& b) {
   EXPECT_EQ(a.kind, b.kind);
   EXPECT_EQ(a.phase, b.phase);
   EXPECT_EQ(a.enclosed, b.enclosed);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.next_id, b.next_id);
 }
 
 }  // namespace mistfall::test_support
