@@ -16,6 +16,7 @@
 #include "cli/progress.hpp"
 #include "cli/run_lock.hpp"
 #include "io/errors.hpp"
+#include "io/frame_interval.hpp"
 #include "io/texture_files.hpp"
 #include "io/vtk_writer.hpp"
 #include "render/external_tools.hpp"
@@ -52,13 +53,10 @@ struct Layout {
 
 // The frames nearest to the multiples of render.frame_interval (frame n is at n * output.interval).
 std::vector<Frame> selectFrames(const std::vector<Frame>& all, const CaseConfig& c) {
-  const double dt = c.output.interval, every = c.render.frame_interval;
-  if (every <= dt * (1.0 + 1e-9)) return all;
   std::vector<Frame> out;
-  for (const Frame& f : all) {
-    const double t = std::stod(f.number) * dt;
-    if (std::abs(t - std::round(t / every) * every) < 0.5 * dt * (1.0 - 1e-9)) out.push_back(f);
-  }
+  for (const Frame& f : all)
+    if (atFrameInterval(std::stod(f.number) * c.output.interval, c.output.interval, c.render.frame_interval))
+      out.push_back(f);
   return out;
 }
 

@@ -1,10 +1,10 @@
 // TextureWriter and the saved frames of a run (see texture_frames.hpp).
 #include "cli/texture_frames.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <regex>
 
+#include "io/frame_interval.hpp"
 #include "io/texture_files.hpp"
 #include "io/vtk_writer.hpp"
 
@@ -65,10 +65,7 @@ void TextureWriter::frame(const std::string& number, std::shared_ptr<const Image
   for (std::size_t i = 0; i < p.size(); ++i) x[i].head<D>() = p.position[i], u[i].head<D>() = p.velocity[i];
   stage_.spawn(x, u, category, time);
   // texture.file_interval: files only at the frames nearest its multiples (the rule of render.frame_interval)
-  const bool files = !(file_interval_ > output_interval_ * (1.0 + 1e-9)) ||
-                     std::abs(time - std::round(time / file_interval_) * file_interval_) <
-                         0.5 * output_interval_ * (1.0 - 1e-9);
-  if (files) {
+  if (atFrameInterval(time, output_interval_, file_interval_)) {
     const std::string stem = "texture_" + number;
     writeTextureBinary(out_ / (stem + ".bin"), stage_.cloud(), time);
     if (write_vtp_) {

@@ -37,7 +37,6 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
-  const auto& in_system = roles_.in_liquid_system;
   // Rows with too little liquid around them would be set by the mirrored walls alone: free surface.
   const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
   auto liquidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
