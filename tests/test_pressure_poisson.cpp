@@ -142,3 +142,77 @@ TEST(PressurePoisson, CompressedGasAtRestHoldsRhoCSquaredDeltaWithTheMemoryTerm)
   EXPECT_EQ(compressibleMemoryTerm(PressureSourceTerm{PressureSource::Standard, 1.0}, 100.0, dt, c), 0.0);
   EXPECT_EQ(compressibleMemoryTerm(source, 100.0, dt, std::numeric_limits<double>::infinity()), 0.0);
 }
+
+namespace {
+
+// A 2D five-point Laplacian with a small diagonal shift (eq. (17)'s form) on the cells (x, y) of an n x n grid
+// that `inside` keeps (the others are Dirichlet 0); the rows' keys are the cells' numbers, as particle ids are.
+struct GridSystem {
+  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix;
+  Eigen::VectorXd rhs;
+  std::vector<std::int64_t> keys;
+};
+
+template <class Inside>
+GridSystem gridSystem(int n, Inside inside) {
+  GridSystem g;
+  std::vector<int> row(n * n, -1);
+  for (int c = 0; c < n * n; ++c)
+    if (inside(c % n, c / n)) row[c] = static_cast<int>(g.keys.size()), g.keys.push_back(c);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t r = 0; r < g.keys.size(); ++r) {
+    const int c = static_cast<int>(g.keys[r]), x = c % n, y = c / n;
+    entries.emplace_back(r, r, 4.01);
+    const int next[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+    for (const auto& q : next)
+      if (q[0] >= 0 && q[0] < n && q[1] >= 0 && q[1] < n && row[q[1] * n + q[0]] >= 0)
+        entries.emplace_back(r, row[q[1] * n + q[0]], -1.0);
+  }
+  g.matrix.resize(static_cast<Eigen::Index>(g.keys.size()), static_cast<Eigen::Index>(g.keys.size()));
+  g.matrix.setFromTriplets(entries.begin(), entries.end());
+  g.matrix.makeCompressed();
+  g.rhs.resize(g.matrix.rows());
+  for (Eigen::Index r = 0; r < g.rhs.size(); ++r) g.rhs[r] = std::sin(0.37 * static_cast<double>(g.keys[r]));
+  return g;
+}
+
+}  // namespace
+
+// The amg solver's reuse of its hierarchy for a system whose rows changed (linear_solver.hpp): rows that come and
+// go (particles joining and leaving the gas system) keep the kept hierarchy while enough rows are kept, and the
+// solution still meets the tolerance; too many new rows, or kept_rows = 1, mean a new setup.
+TEST(PressurePoisson, AmgReusesItsHierarchyWhileMostRowsAreKept) {
+  constexpr int n = 70;
+  const GridSystem first = gridSystem(n, [](int x, int) { return x < n - 2; });
+  // 3 % of the rows changed: a column of cells leaves, another comes in, a few in the middle become Dirichlet
+  const GridSystem moved = gridSystem(n, [](int x, int y) { return x != 0 && x < n - 1 && !(x == 30 && y % 3 == 0); });
+  const GridSystem other = gridSystem(n, [](int x, int y) { return (x + y) % 5 != 0; });  // 20 % of the rows gone
+  struct Row {
+    double kept_rows;
+    const GridSystem* second;
+    bool reused;
+  };
+  for (const Row& row : {Row{0.9, &moved, true}, Row{1.0, &moved, false}, Row{0.9, &other, false}}) {
+    SCOPED_TRACE(testing::Message() << "kept_rows " << row.kept_rows << ", second system of "
+                                    << row.second->keys.size() << " rows");
+    auto solver = makeLinearSolver(PressureSolverKind::HypreAmg, 1e-10, 500, PreconditionerReuse{8, 10, row.kept_rows});
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(first.rhs.size());
+    const auto setup = solver->solve(first.matrix, first.rhs, x, &first.keys);
+    EXPECT_FALSE(setup.reused);
+    const GridSystem& s = *row.second;
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(s.rhs.size());
+    const auto result = solver->solve(s.matrix, s.rhs, y, &s.keys);
+    EXPECT_EQ(result.reused, row.reused);
+    // the kept coarse levels no longer see the changed rows: more iterations, boundedly (9 -> 17 here)
+    EXPECT_LE(result.iterations, 2 * setup.iterations + 2);
+    EXPECT_TRUE(result.converged);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> exact(Eigen::SparseMatrix<double>(s.matrix));
+    const Eigen::VectorXd reference = exact.solve(s.rhs);
+    EXPECT_LT((y - reference).norm(), 1e-8 * reference.norm());
+    // ... and the same system again keeps the hierarchy (as fitted), converging as well
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(s.rhs.size());
+    const auto again = solver->solve(s.matrix, s.rhs, z, &s.keys);
+    EXPECT_TRUE(again.reused);
+    EXPECT_LT((z - reference).norm(), 1e-8 * reference.norm());
+  }
+}

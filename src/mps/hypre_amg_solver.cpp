@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "mps/linear_solver.hpp"
@@ -186,7 +187,7 @@ class HypreAmgSolver final : public LinearSolver {
   ~HypreAmgSolver() override { forget(); }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids,
+                          Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys,
                           const std::vector<std::int32_t>* row_order) override {
     LinearSolveResult result;
     const std::int64_t rows = a.rows();
@@ -202,14 +203,14 @@ class HypreAmgSolver final : public LinearSolver {
     if (!a.isCompressed()) throw std::logic_error("the amg solver needs a compressed matrix");
     const double t0 = omp_get_wtime();
     if (x.size() != rows) x.setZero(rows);
-    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_ids && rows == rows_ && *row_ids == ids_ &&
-                       uses_ < reuse_.max_reuse && last_iterations_ <= setup_iterations_ + reuse_.slack;
+    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_keys && uses_ < reuse_.max_reuse &&
+                       last_iterations_ <= setup_iterations_ + reuse_.slack && followRows(a, *row_keys);
     const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
       useFine(a, row_order);
     } else {
-      setUp(a, row_ids, row_order);
+      setUp(a, row_keys, row_order);
     }
     double t1 = omp_get_wtime();
     int iterations = iterate(b, x);
@@ -218,7 +219,7 @@ class HypreAmgSolver final : public LinearSolver {
     if (reuse && !converged) {  // the kept hierarchy did not do: afresh
       x = guess;
       const double t2 = omp_get_wtime();
-      setUp(a, row_ids, row_order);
+      setUp(a, row_keys, row_order);
       t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
       iterations = iterate(b, x);
@@ -242,8 +243,8 @@ class HypreAmgSolver final : public LinearSolver {
     if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
     setup_matrix_ = nullptr;
     levels_.clear();
-    ids_.clear();
-    rows_ = -1;
+    setup_row_of_.clear();
+    keys_.clear();
     uses_ = 0;
   }
 
@@ -289,7 +290,7 @@ class HypreAmgSolver final : public LinearSolver {
   };
 
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
-  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_ids,
+  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys,
              const std::vector<std::int32_t>* row_order) {
     forget();
     setup_matrix_ = parCsrCopy(a);
@@ -318,6 +319,7 @@ class HypreAmgSolver final : public LinearSolver {
       }
       if (l + 1 < count) {
         level.p = rowsOf(hypre_ParAMGDataPArray(data)[l]);
+        if (l == 0) setup_p0_ = level.p;
         const auto coarse_rows = hypre_CSRMatrixNumRows(hypre_ParCSRMatrixDiag(hypre_ParAMGDataAArray(data)[l + 1]));
         level.pt = transposeOf(level.p, coarse_rows);
       }
@@ -353,9 +355,78 @@ class HypreAmgSolver final : public LinearSolver {
     const Rows coarsest = count == 1 ? rowsOf(a) : levels_.back().a;
     coarse_dense_ = coarsest.n <= kMaxDense;
     if (coarse_dense_) factorCoarsest(coarsest);
-    rows_ = a.rows();
-    if (row_ids) ids_ = *row_ids;
+    if (row_keys) {
+      keys_ = *row_keys;
+      setup_row_of_.reserve(keys_.size());
+      for (std::size_t r = 0; r < keys_.size(); ++r) setup_row_of_.emplace(keys_[r], static_cast<int>(r));
+    }
     uses_ = 0;
+  }
+
+  // Makes the kept hierarchy fit a system of rows `keys` (PreconditionerReuse): the same rows, or rows of which at
+  // least kept_rows (of the larger of the two systems) have a row of the same key in the set-up system. Level 0's
+  // interpolation is then the set-up one's rows at their new places, and for a new row the mean of its kept
+  // neighbours' rows weighted by its couplings to them (|a_rj|). False: a new setup.
+  bool followRows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>& keys) {
+    if (keys == keys_) return true;
+    if (levels_.size() < 2 || setup_row_of_.empty() || reuse_.kept_rows >= 1.0) return false;
+    const auto& setup_p = setup_p0_;
+    const std::int64_t n = static_cast<std::int64_t>(keys.size());
+    std::vector<int> setup_row(n, -1);
+    std::int64_t kept = 0;
+    for (std::int64_t r = 0; r < n; ++r) {
+      const auto found = setup_row_of_.find(keys[r]);
+      if (found == setup_row_of_.end() || found->second >= setup_p.n) continue;
+      setup_row[r] = found->second;
+      ++kept;
+    }
+    if (static_cast<double>(kept) < reuse_.kept_rows * static_cast<double>(std::max<std::int64_t>(n, setup_p.n)))
+      return false;
+    OwnedRows& p = followed_p0_;
+    p.start.assign(n + 1, 0);
+    p.column.clear();
+    p.value.clear();
+    // A new row interpolates as its kept neighbours do, weighted by its couplings to them (|a_rj|).
+    const Rows fine_rows = rowsOf(a);
+    std::vector<double> row_sum;  // the new row's interpolation, dense over the coarse points it touches
+    std::vector<int> touched;
+    row_sum.assign(levels_[1].a.n, 0.0);
+    for (std::int64_t r = 0; r < n; ++r) {
+      if (setup_row[r] >= 0) {
+        for (int k = setup_p.start[setup_row[r]]; k < setup_p.start[setup_row[r] + 1]; ++k) {
+          p.column.push_back(setup_p.column[k]);
+          p.value.push_back(setup_p.value[k]);
+        }
+      } else {
+        double weight = 0.0;
+        for (int k = fine_rows.start[r]; k < fine_rows.start[r + 1]; ++k) {
+          const int j = fine_rows.column[k];
+          if (j == r || setup_row[j] < 0) continue;
+          const double w = std::abs(fine_rows.value[k]);
+          weight += w;
+          for (int q = setup_p.start[setup_row[j]]; q < setup_p.start[setup_row[j] + 1]; ++q) {
+            if (row_sum[setup_p.column[q]] == 0.0) touched.push_back(setup_p.column[q]);
+            row_sum[setup_p.column[q]] += w * setup_p.value[q];
+          }
+        }
+        std::sort(touched.begin(), touched.end());
+        for (int c : touched) {
+          if (row_sum[c] != 0.0) p.column.push_back(c), p.value.push_back(row_sum[c] / weight);
+          row_sum[c] = 0.0;
+        }
+        touched.clear();
+      }
+      p.start[r + 1] = static_cast<int>(p.column.size());
+    }
+    Level& fine = levels_[0];
+    fine.p = p.rows();
+    fine.pt = transposeOf(fine.p, levels_[1].a.n);
+    fine.x.setZero(n);
+    fine.b.setZero(n);
+    fine.r.setZero(n);
+    fine.old.setZero(n);
+    keys_ = keys;
+    return true;
   }
 
   void factorCoarsest(const Rows& coarsest) {
@@ -488,8 +559,10 @@ class HypreAmgSolver final : public LinearSolver {
   bool coarse_ok_ = true;
   bool coarse_dense_ = true;
   Eigen::VectorXd r_, z_, p_, q_;
-  std::vector<std::int32_t> ids_;  // the rows of the kept hierarchy
-  std::int64_t rows_ = -1;
+  std::vector<std::int64_t> keys_;  // the rows of the system the kept hierarchy was last fitted to
+  std::unordered_map<std::int64_t, int> setup_row_of_;  // key -> row of the set-up system
+  Rows setup_p0_;           // level 0's interpolation as set up (hypre's)
+  OwnedRows followed_p0_;   // ... fitted to the rows of a later system (followRows)
   int uses_ = 0;  // systems solved with the kept hierarchy since its setup
   int setup_iterations_ = 0, last_iterations_ = 0;
 };

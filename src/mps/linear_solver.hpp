@@ -24,13 +24,14 @@ struct LinearSolveResult {
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  // x holds the initial guess on entry and the solution on exit. `row_ids` (optional) names what each row is
-  // (e.g. the particle of the unknown): a solver may precondition this system with what it built for an earlier
-  // one whose rows were the same (see reuse below); without ids it never does. `row_order` (optional): every row
+  // x holds the initial guess on entry and the solution on exit. `row_keys` (optional) names what each row is
+  // (e.g. the id of the unknown's particle, which it keeps for its life): a solver may precondition this system
+  // with what it built for an earlier one whose rows were mostly the same (see reuse below); without keys it
+  // never does. `row_order` (optional): every row
   // once, in an order that keeps coupled rows close (e.g. the particles sorted by place); the amg solver cuts its
   // smoother's blocks from it (the result depends on it, not on the thread count).
   virtual LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                                  Eigen::VectorXd& x, const std::vector<std::int32_t>* row_ids = nullptr,
+                                  Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys = nullptr,
                                   const std::vector<std::int32_t>* row_order = nullptr) = 0;
   // Drops whatever is kept from earlier systems: the next solve starts afresh. The simulation calls it at every
   // checkpoint, so that a resumed run meets the same state as the unbroken one.
@@ -38,13 +39,18 @@ class LinearSolver {
   virtual const char* name() const = 0;
 };
 
-// Reuse of the preconditioner (amg): while the rows stay the same (same ids, in the same order), the AMG hierarchy
-// of the last set-up system preconditions the next systems (the fine level always uses the new matrix, so the
-// tolerance is met; only the number of iterations may grow), for at most `max_reuse` systems and while the
-// iterations stay within `slack` of those after the set-up. max_reuse = 0: a new hierarchy for every system.
+// Reuse of the preconditioner (amg): the AMG hierarchy of the last set-up system preconditions the next systems
+// (the fine level always uses the new matrix, so the tolerance is met; only the number of iterations may grow),
+// for at most `max_reuse` systems and while the iterations stay within `slack` of those after the set-up. Rows
+// may come and go between the systems (a particle joins or leaves the system) while at least `kept_rows` (a
+// fraction of the larger system) of the new rows have a row with the same key in the set-up system: the interpolation to the finest level
+// follows the kept rows to their new place and gives the new rows no coarse correction (the smoother treats
+// them); the cycle stays symmetric positive definite, as conjugate gradients need. max_reuse = 0: a new
+// hierarchy for every system; kept_rows = 1: only for systems of exactly the same rows.
 struct PreconditionerReuse {
   int max_reuse = 0;
   int slack = 1;
+  double kept_rows = 1.0;
 };
 
 std::unique_ptr<LinearSolver> makeLinearSolver(PressureSolverKind kind, double tolerance, int max_iterations,
