@@ -169,7 +169,7 @@ struct TextureConfig {
   FluctuationModel fluctuation = FluctuationModel::Redrawn;
   double langevin_time_scale = 0.48;         // C_L in T_L = C_L Ds / (Ce sqrt(k))
   double time_step = 1.0e-3;                 // [s] texture step between frames
-  double match_radius = 1.0;                 // [l0] isolated particles this close between frames are the same one
+  double match_radius = 1.0;                 // [l0] frames without ids: isolated particles this close between frames are the same one
   double birth_grace = 0.02;                 // [s] a particle never yet in its carrying phase is kept this long
   bool run_inline = false;                   // key `inline`: simulate writes RUN_DIR/texture at every frame
   double file_interval = 0.0;                // [s] texture files only at frames nearest its multiples; 0 = every frame

@@ -59,11 +59,12 @@ TextureWriter::TextureWriter(const CaseConfig& config, fs::path out_dir, bool as
 
 template <int D>
 void TextureWriter::frame(const std::string& number, std::shared_ptr<const ImageData> grid,
-                          const Particles<D>& p, const std::vector<std::uint8_t>& category, double time) {
+                          const Particles<D>& p, const std::vector<std::uint8_t>& category, double time,
+                          bool with_ids) {
   stage_.advanceTo(std::move(grid));
   std::vector<Vec3> x(p.size(), Vec3::Zero()), u(p.size(), Vec3::Zero());
   for (std::size_t i = 0; i < p.size(); ++i) x[i].head<D>() = p.position[i], u[i].head<D>() = p.velocity[i];
-  stage_.spawn(x, u, category, time);
+  stage_.spawn(x, u, category, time, with_ids ? &p.id : nullptr);
   // texture.file_interval: files only at the frames nearest its multiples (the rule of render.frame_interval)
   if (atFrameInterval(time, output_interval_, file_interval_)) {
     const std::string stem = "texture_" + number;
@@ -83,16 +84,16 @@ void TextureWriter::replay(const fs::path& run, const std::vector<SavedFrame>& f
   for (const SavedFrame& f : frames) {
     auto grid = std::make_shared<ImageData>(readVti(f.fields));
     grid->time = f.time;  // the frame's time, exactly (as simulate's in-memory grid)
-    double time = 0.0;
-    const Particles<D> p = readVtp<D>(f.frame, &time);
-    frame<D>(f.number, std::move(grid), p, readFrameCategory(f.frame, run), time);
+    VtpFrameInfo info;
+    const Particles<D> p = readVtp<D>(f.frame, info);
+    frame<D>(f.number, std::move(grid), p, readFrameCategory(f.frame, run), info.time, info.has_id);
   }
 }
 
 template void TextureWriter::frame<2>(const std::string&, std::shared_ptr<const ImageData>, const Particles<2>&,
-                                      const std::vector<std::uint8_t>&, double);
+                                      const std::vector<std::uint8_t>&, double, bool);
 template void TextureWriter::frame<3>(const std::string&, std::shared_ptr<const ImageData>, const Particles<3>&,
-                                      const std::vector<std::uint8_t>&, double);
+                                      const std::vector<std::uint8_t>&, double, bool);
 template void TextureWriter::replay<2>(const fs::path&, const std::vector<SavedFrame>&);
 template void TextureWriter::replay<3>(const fs::path&, const std::vector<SavedFrame>&);
 

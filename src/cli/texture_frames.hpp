@@ -51,10 +51,11 @@ class TextureWriter {
                 TextureStage::Progress progress = {});
 
   // One frame: steps the cloud to the grid's time (grid->time must be the frame's time), spawns the sources of
-  // the frame's newly isolated particles, writes the files.
+  // the frame's newly isolated particles (followed by their ids; by proximity when `with_ids` is false, for frames
+  // written before the frames had ids), writes the files.
   template <int D>
   void frame(const std::string& number, std::shared_ptr<const ImageData> grid, const Particles<D>& particles,
-             const std::vector<std::uint8_t>& category, double time);
+             const std::vector<std::uint8_t>& category, double time, bool with_ids = true);
 
   // frame() for each saved frame in order, read from its files.
   template <int D>

@@ -342,7 +342,8 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
                                                  : std::vector<std::uint8_t>();
     // "id" is absent from frames written before it existed: numbered 0, 1, ... in the frame's order.
     std::vector<std::int64_t> ids;
-    if (d.arrays.count("id")) ids = d.decode<std::int64_t>("id", 1, n);
+    frame.has_id = d.arrays.count("id") > 0;
+    if (frame.has_id) ids = d.decode<std::int64_t>("id", 1, n);
     d.decode<std::int64_t>("connectivity", 1, n);
     d.decode<std::int64_t>("offsets", 1, n);
 

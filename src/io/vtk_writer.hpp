@@ -29,6 +29,7 @@ struct VtpFrameInfo {
   double time = 0.0;                   // the TIME field (0 if absent)
   bool ascii = false;                  // written with ascii = true (no appended data)
   std::vector<std::uint8_t> category;  // the category array; empty when the frame has none
+  bool has_id = false;                 // the frame has the id array (else ids are 0, 1, ... in its order)
 };
 
 // Reads a file written by writeVtp (binary or ascii). Optionally returns the TIME field (0 if absent).

@@ -1,15 +1,17 @@
 // Birth of texture sources from the classified MPS frames. A liquid particle whose category becomes 3 (droplet)
 // spawns one droplet (mist) source, a gas particle whose category becomes 6 (bubble) one bubble (micro-bubble)
 // source, at its position and with its MPS velocity (section 3.2).
-// "Becomes": the frames carry no stable particle id (the solver compacts its arrays when outflow removes particles
-// and appends inflow particles, and the .vtp frames store no id), so a particle is followed from one frame to the
-// next by proximity: an isolated particle of frame n is the same as an isolated particle of the same category in
-// frame n-1 whose position advanced by its velocity, x + u (t_n - t_{n-1}), lies within the match radius
-// (texture.match_radius l0); the nearest such one is taken, each at most once. Only unmatched isolated
-// particles spawn a source, so a particle that stays isolated over consecutive frames spawns one source.
+// "Becomes": a particle is followed from one frame to the next by its id (the frames' `id` array: every particle
+// keeps its id for its life, particles.hpp): an isolated particle of frame n whose id was isolated, in the same
+// category, in frame n-1 is not new. Frames written before ids existed are followed by proximity instead: an
+// isolated particle of frame n is the same as an isolated particle of the same category in frame n-1 whose
+// position advanced by its velocity, x + u (t_n - t_{n-1}), lies within the match radius (texture.match_radius
+// l0); the nearest such one is taken, each at most once. Only new isolated particles spawn a source, so a
+// particle that stays isolated over consecutive frames spawns one source.
 #pragma once
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "texture/particle_motion.hpp"
@@ -31,19 +33,27 @@ class IsolatedParticleTracker {
  public:
   explicit IsolatedParticleTracker(double match_radius) : match_radius_(match_radius) {}
 
-  // The particles of the frame at `time` (positions and velocities padded to 3D, one category each) that are newly
-  // isolated, in particle order; remembers this frame's isolated particles for the next call.
+  // The particles of the frame at `time` (positions and velocities padded to 3D, one category each; their ids,
+  // or nullptr for a frame without ids) that are newly isolated, in particle order; remembers this frame's
+  // isolated particles for the next call.
   std::vector<SourceBirth> update(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
-                                  const std::vector<std::uint8_t>& category, double time);
+                                  const std::vector<std::uint8_t>& category, double time,
+                                  const std::vector<std::uint64_t>* id = nullptr);
 
  private:
   struct Isolated {
     Vec3 position, velocity;
     std::uint8_t category;
+    std::uint64_t id;
   };
+  bool matchesByProximity(const Vec3& position, std::uint8_t category, double elapsed);
   double match_radius_;
   double time_ = 0.0;
   std::vector<Isolated> previous_;
+  // proximity matching: the previous frame's isolated particles advanced to this frame, binned by match radius
+  std::vector<Vec3> predicted_;
+  std::vector<char> taken_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
 };
 
 }  // namespace mistfall

@@ -50,8 +50,9 @@ void TextureStage::advanceTo(std::shared_ptr<const ImageData> grid) {
 }
 
 void TextureStage::spawn(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
-                         const std::vector<std::uint8_t>& category, double time) {
-  for (const SourceBirth& b : tracker_.update(position, velocity, category, time)) {
+                         const std::vector<std::uint8_t>& category, double time,
+                         const std::vector<std::uint64_t>* id) {
+  for (const SourceBirth& b : tracker_.update(position, velocity, category, time, id)) {
     const std::uint64_t id = cloud_.addSource(b.kind, b.position, b.velocity, time);
     if (dimension_ == 2) cloud_.position.back()[2] = cloud_.acrossPosition(id);
     ++(b.kind == TextureKind::Droplet ? spawned_droplets_ : spawned_bubbles_);

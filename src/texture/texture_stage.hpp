@@ -38,9 +38,11 @@ class TextureStage {
   TextureStage(const CaseConfig& config, Progress progress = {});
 
   void advanceTo(std::shared_ptr<const ImageData> grid);
-  // Positions and velocities padded to 3D (z = 0 in 2D: a 2D run's sources get z across the width).
+  // Positions and velocities padded to 3D (z = 0 in 2D: a 2D run's sources get z across the width); the
+  // particles' ids (nullptr: a frame written before ids, followed by proximity; source_tracker.hpp).
   void spawn(const std::vector<Vec3>& position, const std::vector<Vec3>& velocity,
-             const std::vector<std::uint8_t>& category, double time);
+             const std::vector<std::uint8_t>& category, double time,
+             const std::vector<std::uint64_t>* id = nullptr);
 
   const TextureCloud& cloud() const { return cloud_; }
   TextureCountsRow row(double time) const;
