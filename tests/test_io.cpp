@@ -159,7 +159,8 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(
       "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
-      "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support",
+      "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
+      "liquid_volume,gas_volume,gas_compression,gas_pressure",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -172,6 +173,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.inflow = 120; r.created = 4000; r.removed = 3900; r.inflow_rate = 6400.5; r.outflow_rate = 6399.25;
   r.gas_capped = 31;
   r.collisions = 7; r.gradient_fallbacks = 8; r.thin_support = 9;
+  r.liquid_volume = 0.04003125; r.gas_volume = 0.5; r.gas_compression = -1.25e-3; r.gas_pressure = -173.5;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -198,6 +200,10 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(7, rows[0].collisions);
   EXPECT_EQ(8, rows[0].gradient_fallbacks);
   EXPECT_EQ(9, rows[0].thin_support);
+  EXPECT_EQ(0.04003125, rows[0].liquid_volume);
+  EXPECT_EQ(0.5, rows[0].gas_volume);
+  EXPECT_EQ(-1.25e-3, rows[0].gas_compression);
+  EXPECT_EQ(-173.5, rows[0].gas_pressure);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -7,6 +7,8 @@
 //    it develops spurious motion (0.3-2 m/s, particles lost; docs/validation.md).
 #include <gtest/gtest.h>
 
+#include "io/diagnostics.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -73,8 +75,11 @@ TEST_P(PhysicsStillTank, StaysStillWithPressureRhoGH) {
   std::vector<double> sum_p(bands, 0.0), sum_expected(bands, 0.0);
   std::vector<double> times;
   for (double time = t.from; time <= t.to + 1e-9; time += t.every) times.push_back(time);
-  double max_speed = 0.0;
+  double max_speed = 0.0, max_volume_error = 0.0;
   std::size_t initial_fluid = 0;
+  double water_area = 0.0;
+  for (const auto& r : config.regions)
+    if (r.name == "water") water_area = (r.box.max[0] - r.box.min[0]) * (r.box.max[1] - r.box.min[1]);
   test_support::runThrough<2>(config, times, [&](double time, const SimulationState<2>& s, const MpsSolver<2>& m) {
     const auto& p = s.particles;
     double top = -1e9, bottom = 1e9;
@@ -96,6 +101,11 @@ TEST_P(PhysicsStillTank, StaysStillWithPressureRhoGH) {
       sum_p[band] += p.pressure[i];
       sum_expected[band] += rho * g * depth;
     }
+    // the water's volume (diagnostics.csv's liquid_volume, l0^D n0 / n per particle) is the tank's water area
+    DiagnosticsRow row;
+    measurePhaseVolumes(row, p, l0, m.constants().n0, config.numerics.surface_threshold);
+    EXPECT_NEAR(row.liquid_volume / water_area, 1.0, 0.01) << "t = " << time;
+    max_volume_error = std::max(max_volume_error, std::abs(row.liquid_volume / water_area - 1.0));
     const double speed = m.maxFluidSpeed();
     EXPECT_LT(speed, t.max_speed) << "t = " << time;
     max_speed = std::max(max_speed, speed);
@@ -105,5 +115,6 @@ TEST_P(PhysicsStillTank, StaysStillWithPressureRhoGH) {
     std::printf("%s: depth band %d/%d: mean p / (rho g h) = %.4f\n", t.name, b + 1, bands, ratio);
     EXPECT_NEAR(ratio, 1.0, t.band_tolerance) << "band " << b + 1;
   }
-  std::printf("%s: max speed over %.2f-%.2f s: %.2e m/s\n", t.name, t.from, t.to, max_speed);
+  std::printf("%s: max speed over %.2f-%.2f s: %.2e m/s; water volume within %.2e of the area\n", t.name, t.from,
+              t.to, max_speed, max_volume_error);
 }

@@ -79,13 +79,14 @@ std::string readText(const fs::path& file) {
 
 template <int D>
 DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& config, const StepReport& last,
-                             const std::vector<BubbleStats>& bubbles, double wall_seconds) {
+                             const std::vector<BubbleStats>& bubbles, double wall_seconds, double n0) {
   DiagnosticsRow row;
   row.time = s.time;
   row.step = s.step;
   row.dt = s.dt;
   const double volume = std::pow(config.numerics.particle_spacing, D);  // particle mass = rho l0^D
   measureParticles(row, s.particles, config.physics.liquid.density * volume, config.physics.gas.density * volume);
+  measurePhaseVolumes(row, s.particles, config.numerics.particle_spacing, n0, config.numerics.surface_threshold);
   row.ppe_iterations = last.ppe_iterations;
   row.ppe_residual = last.ppe_residual;
   row.wall_seconds = wall_seconds;
@@ -189,7 +190,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         texture_seconds = omp_get_wtime() - texture_start;
       }
     }
-    DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start);
+    DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start,
+                                       solver.constants().n0);
     row.gas_capped = std::exchange(guards.gas_capped, 0);
     row.collisions = std::exchange(guards.collisions, 0);
     row.gradient_fallbacks = std::exchange(guards.gradient_fallbacks, 0);

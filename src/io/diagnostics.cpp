@@ -85,6 +85,10 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::collisions>("collisions"),
     column<&DiagnosticsRow::gradient_fallbacks>("gradient_fallbacks"),
     column<&DiagnosticsRow::thin_support>("thin_support"),
+    column<&DiagnosticsRow::liquid_volume, 10>("liquid_volume"),
+    column<&DiagnosticsRow::gas_volume, 10>("gas_volume"),
+    column<&DiagnosticsRow::gas_compression, 10>("gas_compression"),
+    column<&DiagnosticsRow::gas_pressure, 10>("gas_pressure"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {
@@ -204,6 +208,31 @@ void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_
   row.kinetic_energy = energy;
 }
 
+template <int D>
+void measurePhaseVolumes(DiagnosticsRow& row, const Particles<D>& p, double l0, double n0, double interior_fraction) {
+  const double cell = std::pow(l0, D);
+  double volume[2] = {0.0, 0.0}, compression = 0.0, pressure = 0.0;
+  std::size_t interior_gas = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    const bool gas = p.phase[i] == Phase::Gas;
+    const double n = p.number_density[i];
+    const bool interior = n >= interior_fraction * n0 && n > 0.0;
+    volume[gas] += interior ? cell * n0 / n : cell;
+    if (gas && interior) {
+      compression += (n - n0) / n0;
+      pressure += p.pressure[i];
+      ++interior_gas;
+    }
+  }
+  row.liquid_volume = volume[0];
+  row.gas_volume = volume[1];
+  row.gas_compression = interior_gas ? compression / static_cast<double>(interior_gas) : 0.0;
+  row.gas_pressure = interior_gas ? pressure / static_cast<double>(interior_gas) : 0.0;
+}
+
+template void measurePhaseVolumes<2>(DiagnosticsRow&, const Particles<2>&, double, double, double);
+template void measurePhaseVolumes<3>(DiagnosticsRow&, const Particles<3>&, double, double, double);
 template void measureParticles<2>(DiagnosticsRow&, const Particles<2>&, double, double);
 template void measureParticles<3>(DiagnosticsRow&, const Particles<3>&, double, double);
 

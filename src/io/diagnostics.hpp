@@ -39,6 +39,10 @@ struct DiagnosticsRow {
   // Numerical guards of the liquid since the previous row (solver.hpp StepReport): collision reversals, corrected
   // gradients that fell back to the standard form, rows made free surface by numerics.liquid_support_fraction.
   std::int64_t collisions = 0, gradient_fallbacks = 0, thin_support = 0;
+  // Volume of each phase (measurePhaseVolumes) [m^2 in 2D, m^3 in 3D], and the gas's mean compression
+  // (n - n0)/n0 and mean pressure [Pa] over its particles of full neighbourhood: with eq. (17) at rest,
+  // gas_pressure = rho_g c^2 gas_compression plus its hydrostatic mean (the gas's bulk modulus, read off two rows).
+  double liquid_volume = 0, gas_volume = 0, gas_compression = 0, gas_pressure = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and
@@ -46,6 +50,13 @@ struct DiagnosticsRow {
 template <int D>
 void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_particle_mass,
                       double gas_particle_mass);
+
+// Fills liquid_volume, gas_volume, gas_compression and gas_pressure. A fluid particle's volume is l0^D n0 / n_i
+// (its MPS density is rho n_i / n0 and its mass rho l0^D) where its number density is at least
+// `interior_fraction` n0; a particle of a thinner neighbourhood (a free surface: n_i says nothing of its volume)
+// counts l0^D. The compression and pressure average the gas particles of the first kind.
+template <int D>
+void measurePhaseVolumes(DiagnosticsRow& row, const Particles<D>& p, double l0, double n0, double interior_fraction);
 
 class DiagnosticsWriter {
  public:
