@@ -147,6 +147,21 @@ void checkNeighbourSearchAgainstBruteForce() {
     total += found.size();
   }
   EXPECT_GT(total, p.size());  // the test is not vacuous
+  // The near list (filterNeighbours): exactly the pairs within the smaller reach, in the full list's order.
+  const double reach = 0.05;
+  NeighborList near;
+  filterNeighbours<D>(p.position, nl, reach, near);
+  ASSERT_EQ(near.particleCount(), p.size());
+  std::size_t near_total = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::vector<std::int32_t> expected, found(near.indices.begin() + near.begin(i), near.indices.begin() + near.end(i));
+    for (auto s = nl.begin(i); s < nl.end(i); ++s)
+      if ((p.position[nl.indices[s]] - p.position[i]).norm() < reach) expected.push_back(nl.indices[s]);
+    ASSERT_EQ(found, expected) << "particle " << i;
+    near_total += found.size();
+  }
+  EXPECT_GT(near_total, 0u);
+  EXPECT_LT(near_total, total);
 }
 
 TEST(NeighbourSearch, EqualsBruteForce2D) { checkNeighbourSearchAgainstBruteForce<2>(); }

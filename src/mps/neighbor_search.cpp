@@ -141,7 +141,31 @@ bool NeighborSearch<D>::covers(const std::vector<Vec<D>>& position, const std::v
   return ok;
 }
 
+template <int D>
+void filterNeighbours(const std::vector<Vec<D>>& position, const NeighborList& list, double reach, NeighborList& out) {
+  const std::int64_t n = static_cast<std::int64_t>(list.particleCount());
+  const double reach2 = reach * reach;
+  auto near = [&](std::int64_t i, std::int32_t j) { return (position[j] - position[i]).squaredNorm() < reach2; };
+  out.offsets.assign(n + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::int64_t count = 0;
+    for (auto s = list.begin(i); s < list.end(i); ++s) count += near(i, list.indices[s]);
+    out.offsets[i + 1] = count;
+  }
+  for (std::int64_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
+  out.indices.resize(static_cast<std::size_t>(out.offsets[n]));
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::int64_t at = out.offsets[i];
+    for (auto s = list.begin(i); s < list.end(i); ++s)
+      if (near(i, list.indices[s])) out.indices[at++] = list.indices[s];
+  }
+}
+
 template class NeighborSearch<2>;
 template class NeighborSearch<3>;
+template void filterNeighbours<2>(const std::vector<Vec<2>>&, const NeighborList&, double, NeighborList&);
+template void filterNeighbours<3>(const std::vector<Vec<3>>&, const NeighborList&, double, NeighborList&);
 
 }  // namespace mistfall

@@ -60,4 +60,11 @@ class NeighborSearch {
   std::int64_t builds_ = 0;
 };
 
+// The pairs of `list` closer than `reach` at `position`, each particle's in the same (ascending) order: a list built
+// with radius R and skin s, filtered at its build positions with reach r + s (r <= R), holds every pair within r
+// for as long as the full list covers the positions (NeighborSearch::covers), so operators of radius r give the same
+// bits with it and visit fewer pairs (in 2D, (r + s)^2 / (R + s)^2 of them).
+template <int D>
+void filterNeighbours(const std::vector<Vec<D>>& position, const NeighborList& list, double reach, NeighborList& out);
+
 }  // namespace mistfall

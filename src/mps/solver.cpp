@@ -56,6 +56,12 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
       gas_solver_(makeLinearSolver(config.numerics.pressure_solver, config.numerics.solver_tolerance,
                                    config.numerics.solver_max_iterations, kPreconditionerReuse)),
       full_neighbour_count_(latticeNeighbourCount(D, constants_.re_number_density, constants_.l0)) {
+  // The reach of the near list: every radius its operators use (number density, gas-region links and touches,
+  // collision distance, the entrained gas's 1.5 l0), at most the full list's.
+  const NumericsConfig& n = config.numerics;
+  near_reach_ = std::min(search_.radius(), constants_.l0 * std::max({constants_.re_number_density / constants_.l0,
+                                                                     n.gas_region_link, n.dispersed_gas_touch,
+                                                                     n.collision_distance, 1.5}));
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
     if (k == ParticleKind::Fluid) phase_present_[static_cast<int>(state_.particles.phase[i])] = true;
@@ -172,7 +178,7 @@ template <int D>
 void MpsSolver<D>::findBubbles() {
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
     auto& p = state_.particles;
-    findGasRegions<D>(p, neighbours_, constants_.re_number_density, constants_.l0, regions_,
+    findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
                       gasRegionOptions(&p.enclosed));
     // Gas that was open and is enclosed now joins the water's system and is carried by the water.
     std::vector<char> joined(p.size(), 0);
@@ -182,7 +188,7 @@ void MpsSolver<D>::findBubbles() {
       joined[i] = regions_.enclosed_particle[i] && !was_enclosed;
       any_joined = any_joined || joined[i];
     }
-    if (any_joined) adoptLiquidVelocity<D>(p, neighbours_, joined, constants_.re_number_density);
+    if (any_joined) adoptLiquidVelocity<D>(p, near_neighbours_, joined, constants_.re_number_density);
     p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
   } else {
@@ -218,7 +224,7 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   if (!phase_present_[static_cast<int>(Phase::Gas)]) return {};
   buildNeighbours();
   GasRegions regions;
-  findGasRegions<D>(state_.particles, neighbours_, constants_.re_number_density, constants_.l0, regions,
+  findGasRegions<D>(state_.particles, near_neighbours_, constants_.re_number_density, constants_.l0, regions,
                     gasRegionOptions(&state_.particles.enclosed));
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
@@ -231,7 +237,7 @@ bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& 
   const auto& p = state_.particles;
   if (fraction <= 0.0 || p.kind[i] != ParticleKind::Fluid) return true;
   auto counted = [&](std::int32_t j) { return counts[j] != 0; };
-  const int count = neighbourCountAt<D>(i, p.position, neighbours_, constants_.re_number_density, counted);
+  const int count = neighbourCountAt<D>(i, p.position, near_neighbours_, constants_.re_number_density, counted);
   return count >= fraction * full_neighbour_count_;
 }
 
@@ -242,6 +248,10 @@ void MpsSolver<D>::buildNeighbours() {
   auto t = timer_.scope(Stage::Neighbours);
   const auto& p = state_.particles;
   if (!search_.covers(p.position, p.kind)) search_.build(p.position, p.kind, neighbours_);
+  if (near_built_ != search_.builds()) {
+    filterNeighbours<D>(p.position, neighbours_, near_reach_ + search_.skin(), near_neighbours_);
+    near_built_ = search_.builds();
+  }
 }
 
 template <int D>
@@ -303,7 +313,7 @@ void MpsSolver<D>::collide(double dt) {
   // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
   const auto& open_gas = roles_.open_gas;
   auto affects = [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); };
-  report_.collisions = resolveCollisions<D>(p.position, p.velocity, p.kind, mass, neighbours_,
+  report_.collisions = resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_,
                        config_.numerics.collision_distance * constants_.l0, config_.numerics.collision_restitution, dt,
                        affects);
 }
@@ -323,7 +333,7 @@ void MpsSolver<D>::setLiquidWallPressure() {
   auto liquid = [&](std::int32_t j) {
     return in_system[j] && (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow);
   };
-  averageMirroredWallPressure<D>(p.position, p.kind, p.pressure, neighbours_, constants_.re_number_density, rho,
+  averageMirroredWallPressure<D>(p.position, p.kind, p.pressure, near_neighbours_, constants_.re_number_density, rho,
                                  gravity_, liquid);
 }
 

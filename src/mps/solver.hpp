@@ -127,6 +127,11 @@ class MpsSolver {
   std::array<bool, 2> phase_present_{false, false};
   NeighborSearch<D> search_;
   NeighborList neighbours_;
+  // The pairs of neighbours_ within near_reach_ (+ the skin): for the operators of the number-density radius
+  // (number density, gradient, gas regions, collision), which then visit about half the pairs (2D).
+  NeighborList near_neighbours_;
+  double near_reach_ = 0.0;
+  std::int64_t near_built_ = -1;  // search_.builds() when near_neighbours_ was filtered
   GasRegions regions_;
   CouplingRoles roles_;
   PressureProblem problem_;

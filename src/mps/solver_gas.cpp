@@ -23,14 +23,14 @@ template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-  markGasSideWalls<D>(p, neighbours_, constants_.re_number_density, roles_);
+  markGasSideWalls<D>(p, near_neighbours_, constants_.re_number_density, roles_);
   const double re = constants_.re_number_density;
   gas_number_density_.assign(n, 0.0);
   auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)
     if (roles_.inGasSystem(i) || roles_.gas_side_wall[i])
-      gas_number_density_[i] = numberDensityAt<D>(i, p.position, neighbours_, re, active);
+      gas_number_density_[i] = numberDensityAt<D>(i, p.position, near_neighbours_, re, active);
   const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
   const PhaseProperties& gas = phases_[static_cast<int>(Phase::Gas)];
   std::vector<char> active_flags(n);
@@ -101,7 +101,7 @@ void MpsSolver<D>::correctGas(double dt) {
 #pragma omp parallel for schedule(static) reduction(+ : capped)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
-    change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, neighbours_, constants_,
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, near_neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
     const double size = change[i].norm();
     bool cut = false;
@@ -131,7 +131,7 @@ void MpsSolver<D>::riseEntrainedGas(double dt) {
   const double speed = config_.numerics.entrained_gas_rise_speed;
   if (speed <= 0.0 || gravity_.norm() == 0.0) return;
   const Vec<D> up = -gravity_ / gravity_.norm();
-  report_.entrained_gas_swaps = mistfall::riseEntrainedGas<D>(state_.particles, neighbours_, regions_, roles_, up,
+  report_.entrained_gas_swaps = mistfall::riseEntrainedGas<D>(state_.particles, near_neighbours_, regions_, roles_, up,
                                                               constants_.l0, speed, dt, state_.step);
 }
 
@@ -140,7 +140,7 @@ void MpsSolver<D>::riseEntrainedGas(double dt) {
 template <int D>
 void MpsSolver<D>::moveBubbleGas(double dt) {
   if (config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure) return;
-  extendVelocityIntoBubbles<D>(state_.particles, neighbours_, roles_, constants_.re_number_density, dt);
+  extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, constants_.re_number_density, dt);
 }
 
 #define MISTFALL_INSTANTIATE(D)                              \

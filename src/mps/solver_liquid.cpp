@@ -26,7 +26,7 @@ void MpsSolver<D>::computeLiquidNumberDensity() {
   const double re = constants_.re_number_density;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)
-    p.number_density[i] = in_system[i] ? numberDensityAt<D>(i, p.position, neighbours_, re, counts) : 0.0;
+    p.number_density[i] = in_system[i] ? numberDensityAt<D>(i, p.position, near_neighbours_, re, counts) : 0.0;
 }
 
 // The liquid system: eq. (9) for liquid and walls (one density), with one unknown per bubble (bubble_pressure.hpp):
@@ -152,7 +152,7 @@ void MpsSolver<D>::correctLiquid(double dt) {
       change[i] = -dt / rho * gradient.value;
       continue;
     }
-    change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, neighbours_, constants_,
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, near_neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
