@@ -430,6 +430,8 @@ TEST(GasRegions, DispersedGasDoesNotJoinTheWatersAirToTheAirAbove) {
   EXPECT_FALSE(plain.enclosed[air_plain]);
   EXPECT_FALSE(dispersed.enclosed[air_dispersed]);
   EXPECT_EQ(dispersed.regionCount(), 4u) << "the air and three regions of one particle";
+  EXPECT_EQ(dispersed.dispersed, 3u) << "the guard's firings (diagnostics.csv dispersed_gas): the chain";
+  EXPECT_EQ(plain.dispersed, 0u);
   // At fraction 0.95 (10 or 11 of 12 falls short) the chain is not dispersed and joins the air as before.
   options.dispersed_fraction = 0.95;
   GasRegions strict;
@@ -458,11 +460,13 @@ TEST(GasRegions, DispersedGasTouchingTheAirJoinsItAndNeverBridgesTwoRegions) {
   findGasRegions<2>(p, nl, kLink, kL0, apart, options);
   EXPECT_NE(apart.region_of[in_dip], apart.region_of[top]);
   EXPECT_TRUE(apart.enclosed_particle[in_dip]) << "without the touch rule the dip's air is a pocket in the water";
+  EXPECT_EQ(apart.dispersed, 1u);
   options.dispersed_touch = 1.5 * kL0;
   findGasRegions<2>(p, nl, kLink, kL0, touching, options);
   EXPECT_EQ(touching.region_of[in_dip], touching.region_of[top]);
   EXPECT_FALSE(touching.enclosed_particle[in_dip]) << "it is the open air it touches";
   EXPECT_EQ(touching.regionCount(), 1u);
+  EXPECT_EQ(touching.dispersed, 0u) << "joined by the touch rule: not counted";
 
   // Two pockets of 4 x 6 air in the water, two columns apart, and one dispersed air particle between them that
   // touches both (1 l0 from the left one, 2 l0 from the right one; touch radius 2.1 l0, join radius 1.5 l0).

@@ -160,7 +160,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "time,step,dt,liquid,gas,wall,dummy,escaped,max_speed,kinetic_energy,ppe_iterations,ppe_residual,wall_seconds,"
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
-      "liquid_volume,gas_volume,gas_compression,gas_pressure",
+      "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -174,6 +174,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.gas_capped = 31;
   r.collisions = 7; r.gradient_fallbacks = 8; r.thin_support = 9;
   r.liquid_volume = 0.04003125; r.gas_volume = 0.5; r.gas_compression = -1.25e-3; r.gas_pressure = -173.5;
+  r.dispersed_gas = 11; r.entrained_swaps = 12; r.regularised_rows = 13;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -204,6 +205,9 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(0.5, rows[0].gas_volume);
   EXPECT_EQ(-1.25e-3, rows[0].gas_compression);
   EXPECT_EQ(-173.5, rows[0].gas_pressure);
+  EXPECT_EQ(11, rows[0].dispersed_gas);
+  EXPECT_EQ(12, rows[0].entrained_swaps);
+  EXPECT_EQ(13, rows[0].regularised_rows);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

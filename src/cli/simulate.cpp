@@ -196,6 +196,9 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.collisions = std::exchange(guards.collisions, 0);
     row.gradient_fallbacks = std::exchange(guards.gradient_fallbacks, 0);
     row.thin_support = std::exchange(guards.thin_support, 0);
+    row.dispersed_gas = std::exchange(guards.dispersed_gas, 0);
+    row.entrained_swaps = std::exchange(guards.entrained_swaps, 0);
+    row.regularised_rows = std::exchange(guards.regularised_rows, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -224,6 +227,9 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.collisions += static_cast<std::int64_t>(last.collisions);
         guards.gradient_fallbacks += static_cast<std::int64_t>(last.gradient_fallbacks);
         guards.thin_support += static_cast<std::int64_t>(last.thin_support);
+        guards.dispersed_gas += static_cast<std::int64_t>(last.dispersed_gas);
+        guards.entrained_swaps += static_cast<std::int64_t>(last.entrained_gas_swaps);
+        guards.regularised_rows += static_cast<std::int64_t>(last.regularised_rows);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

@@ -89,6 +89,9 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::gas_volume, 10>("gas_volume"),
     column<&DiagnosticsRow::gas_compression, 10>("gas_compression"),
     column<&DiagnosticsRow::gas_pressure, 10>("gas_pressure"),
+    column<&DiagnosticsRow::dispersed_gas>("dispersed_gas"),
+    column<&DiagnosticsRow::entrained_swaps>("entrained_swaps"),
+    column<&DiagnosticsRow::regularised_rows>("regularised_rows"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

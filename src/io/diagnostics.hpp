@@ -43,6 +43,10 @@ struct DiagnosticsRow {
   // (n - n0)/n0 and mean pressure [Pa] over its particles of full neighbourhood: with eq. (17) at rest,
   // gas_pressure = rho_g c^2 gas_compression plus its hydrostatic mean (the gas's bulk modulus, read off two rows).
   double liquid_volume = 0, gas_volume = 0, gas_compression = 0, gas_pressure = 0;
+  // The gas's other guards since the previous row (particle-steps): gas moved with the water by
+  // numerics.dispersed_gas_fraction, entrained gas that rose by a phase swap (entrained_gas_rise_speed), bubble
+  // rows given numerics.bubble_regularisation's sound speed.
+  std::int64_t dispersed_gas = 0, entrained_swaps = 0, regularised_rows = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

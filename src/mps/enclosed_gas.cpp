@@ -116,9 +116,11 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
         const double r2 = (p.position[j] - p.position[i]).squaredNorm();
         if (r2 < best || (r2 == best && nearest >= 0 && j < nearest)) best = r2, nearest = j;
       }
-      if (nearest >= 0) uf.join(static_cast<std::int32_t>(i), nearest);
+      if (nearest >= 0) uf.join(static_cast<std::int32_t>(i), nearest), dispersed[i] = 0;
     }
   }
+  out.dispersed = 0;
+  for (std::int64_t i = 0; i < count; ++i) out.dispersed += gas(i) && dispersed[i];
 
   // Region ids in the order of each component's root (its smallest index, met before its other particles).
   out.region_of.assign(n, -1);

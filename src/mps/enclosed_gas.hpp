@@ -58,6 +58,7 @@ struct GasRegions {
   std::vector<std::int32_t> region_of;  // per particle: gas-region id, or -1 for non-gas / inactive particles
   std::vector<char> enclosed;           // per region: 1 if the region is isolated inside liquid (a bubble)
   std::vector<char> enclosed_particle;  // per particle: delta_gl (1 for the gas particles of an enclosed region)
+  std::size_t dispersed = 0;  // gas particles left out of their region by dispersed_fraction (not joined by touch)
 
   std::size_t regionCount() const { return enclosed.size(); }
 };

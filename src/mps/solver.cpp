@@ -191,6 +191,7 @@ void MpsSolver<D>::findBubbles() {
     if (any_joined) adoptLiquidVelocity<D>(p, near_neighbours_, joined, constants_.re_number_density);
     p.enclosed = regions_.enclosed_particle;
     for (char e : regions_.enclosed) report_.bubbles += (e != 0);
+    report_.dispersed_gas = regions_.dispersed;
   } else {
     regions_ = GasRegions{};
   }

@@ -59,6 +59,8 @@ struct StepReport {
   std::int64_t removed = 0;        // particles removed by outflows in the step
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
+  std::size_t dispersed_gas = 0;     // gas particles moved with the water by numerics.dispersed_gas_fraction
+  std::size_t regularised_rows = 0;  // bubble rows given numerics.bubble_regularisation's sound speed
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)

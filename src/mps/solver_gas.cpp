@@ -51,9 +51,11 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     // P_B), so a (nearly) incompressible gas gets a regularising sound speed of numerics.bubble_regularisation
     // l0 / dt on the bubble's rows (10: a shift of about 1e-3 of the diagonal, which keeps the solve well
     // conditioned; 0: none, the paper's incompressible gas).
-    if (roles_.enclosed_gas[i] && config_.numerics.bubble_regularisation > 0.0)
-      problem_.sound_speed[i] =
-          std::min(gas.sound_speed, config_.numerics.bubble_regularisation * constants_.l0 / dt);
+    if (roles_.enclosed_gas[i] && config_.numerics.bubble_regularisation > 0.0 && problem_.unknown[i] &&
+        config_.numerics.bubble_regularisation * constants_.l0 / dt < gas.sound_speed) {
+      problem_.sound_speed[i] = config_.numerics.bubble_regularisation * constants_.l0 / dt;
+      ++report_.regularised_rows;
+    }
   }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
