@@ -103,6 +103,8 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
     }
   }
 
+  out.dispersed = 0;
+  for (std::int64_t i = 0; i < count; ++i) out.dispersed += gas(i) && dispersed[i];
   // Dispersed gas touching undispersed gas joins the nearest such particle's region (never two: no bridge).
   if (options.dispersed_touch > 0.0) {
     const double touch2 = options.dispersed_touch * options.dispersed_touch;
@@ -116,11 +118,9 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
         const double r2 = (p.position[j] - p.position[i]).squaredNorm();
         if (r2 < best || (r2 == best && nearest >= 0 && j < nearest)) best = r2, nearest = j;
       }
-      if (nearest >= 0) uf.join(static_cast<std::int32_t>(i), nearest), dispersed[i] = 0;
+      if (nearest >= 0) uf.join(static_cast<std::int32_t>(i), nearest), --out.dispersed;
     }
   }
-  out.dispersed = 0;
-  for (std::int64_t i = 0; i < count; ++i) out.dispersed += gas(i) && dispersed[i];
 
   // Region ids in the order of each component's root (its smallest index, met before its other particles).
   out.region_of.assign(n, -1);
