@@ -58,6 +58,20 @@ Box boundsOf(const std::vector<Vec<3>>& points, double margin, const Box& clip) 
   return b;
 }
 
+// Calls f(i, j, a, b) for the cells (i, j) = i0 - 1 + (a, b) of the 3 x 3 stencil in x and y inside the grid.
+template <class F>
+void forEachStencilCellXY(const DensityGrid& g, const int* i0, F&& f) {
+  for (int b = 0; b < 3; ++b) {
+    const int j = i0[1] - 1 + b;
+    if (j < 0 || j >= g.n[1]) continue;
+    for (int a = 0; a < 3; ++a) {
+      const int i = i0[0] - 1 + a;
+      if (i < 0 || i >= g.n[0]) continue;
+      f(i, j, a, b);
+    }
+  }
+}
+
 void splat(DensityGrid& g, const std::vector<Vec<3>>& points, double amount) {
   if (g.empty()) return;
   const double scale = amount / (g.h * g.h * g.h);
@@ -68,15 +82,9 @@ void splat(DensityGrid& g, const std::vector<Vec<3>>& points, double amount) {
     for (int c = 0; c < 3; ++c) {
       const int k = i0[2] - 1 + c;
       if (k < 0 || k >= g.n[2]) continue;
-      for (int b = 0; b < 3; ++b) {
-        const int j = i0[1] - 1 + b;
-        if (j < 0 || j >= g.n[1]) continue;
-        for (int a = 0; a < 3; ++a) {
-          const int i = i0[0] - 1 + a;
-          if (i < 0 || i >= g.n[0]) continue;
-          g.at(i, j, k) += static_cast<float>(scale * w[0][a] * w[1][b] * w[2][c]);
-        }
-      }
+      forEachStencilCellXY(g, i0, [&](int i, int j, int a, int b) {
+        g.at(i, j, k) += static_cast<float>(scale * w[0][a] * w[1][b] * w[2][c]);
+      });
     }
   }
 }
@@ -88,15 +96,9 @@ void splatAcross(DensityGrid& g, const std::vector<Vec<2>>& points, double amoun
     int i0[2];
     double w[2][3];
     for (int k = 0; k < 2; ++k) weights((p[k] - g.origin[k]) / g.h, i0[k], w[k]);
-    for (int b = 0; b < 3; ++b) {
-      const int j = i0[1] - 1 + b;
-      if (j < 0 || j >= g.n[1]) continue;
-      for (int a = 0; a < 3; ++a) {
-        const int i = i0[0] - 1 + a;
-        if (i < 0 || i >= g.n[0]) continue;
-        for (int k = 0; k < g.n[2]; ++k) g.at(i, j, k) += static_cast<float>(scale * w[0][a] * w[1][b]);
-      }
-    }
+    forEachStencilCellXY(g, i0, [&](int i, int j, int a, int b) {
+      for (int k = 0; k < g.n[2]; ++k) g.at(i, j, k) += static_cast<float>(scale * w[0][a] * w[1][b]);
+    });
   }
 }
 
