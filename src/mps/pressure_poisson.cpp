@@ -30,7 +30,8 @@ PressureProblem singlePhaseProblem(const Particles<D>& p, const PhaseProperties&
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& number_density,
                             const NeighborList& nl, const MpsConstants& c, const PressureProblem& problem,
-                            PressureSourceTerm source, double dt, PressureSystem& sys) {
+                            PressureSourceTerm source, double dt, PressureSystem& sys, const NeighborList* near) {
+  const NeighborList& divergence_list = near ? *near : nl;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto& takes_part = problem.takes_part;
   const double rho = problem.density;
@@ -47,13 +48,17 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
   // Row lengths (diagonal + unknown neighbours inside re), then fill CSR directly.
   std::vector<std::int64_t> start(rows + 1, 0);
   const double re = c.re_laplacian;
+  // Pairs this far apart are beyond re whatever the rounding of the square root: skipped before computing it.
+  const double beyond2 = re * re * (1.0 + 1e-12);
 #pragma omp parallel for schedule(static)
   for (std::int64_t r = 0; r < rows; ++r) {
     const auto i = sys.particle_of[r];
     std::int64_t count = 1;
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
-      if (sys.row_of[j] >= 0 && weight((p.position[j] - p.position[i]).norm(), re) > 0.0) ++count;
+      if (sys.row_of[j] < 0) continue;
+      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
+      if (r2 < beyond2 && weight(std::sqrt(r2), re) > 0.0) ++count;
     }
     start[r + 1] = count;
   }
@@ -79,7 +84,9 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     for (auto s = nl.begin(i); s < nl.end(i); ++s) {
       const auto j = nl.indices[s];
       if (!takes_part[j]) continue;
-      const double w = weight((p.position[j] - p.position[i]).norm(), re);
+      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
+      if (r2 >= beyond2) continue;
+      const double w = weight(std::sqrt(r2), re);
       if (w <= 0.0) continue;
       diagonal += factor * w;
       if (sys.row_of[j] >= 0) {
@@ -99,7 +106,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
       sys.rhs[r] = rho / (dt * dt) * compression;
     } else {
       auto carriesVelocity = [&](std::int32_t j) { return problem.carries_velocity[j] != 0; };
-      const double divergence = divergenceAt<D>(i, p.position, p.velocity, nl, c, carriesVelocity);
+      const double divergence = divergenceAt<D>(i, p.position, p.velocity, divergence_list, c, carriesVelocity);
       sys.rhs[r] = -rho / dt * divergence + source.relaxation * rho / (dt * dt) * compression;
     }
     if (!problem.extra_rhs.empty()) sys.rhs[r] += problem.extra_rhs[i];
@@ -112,9 +119,9 @@ template PressureProblem singlePhaseProblem<3>(const Particles<3>&, const PhaseP
                                                const std::vector<char>&);
 template void assemblePressureSystem<2>(const Particles<2>&, const std::vector<double>&, const NeighborList&,
                                         const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
-                                        PressureSystem&);
+                                        PressureSystem&, const NeighborList*);
 template void assemblePressureSystem<3>(const Particles<3>&, const std::vector<double>&, const NeighborList&,
                                         const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
-                                        PressureSystem&);
+                                        PressureSystem&, const NeighborList*);
 
 }  // namespace mistfall

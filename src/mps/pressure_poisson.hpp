@@ -72,10 +72,13 @@ inline double compressibleMemoryTerm(PressureSourceTerm source, double previous,
   return (1.0 - source.relaxation) * previous / (dt * dt * sound_speed * sound_speed);
 }
 
-// `number_density` holds n* and p.velocity u* (after the explicit stage).
+// `number_density` holds n* and p.velocity u* (after the explicit stage). `near` (optional): a list of the pairs
+// within the number-density radius (neighbor_search.hpp filterNeighbours) for the mixed source's divergence; the
+// same bits as with `nl`, fewer pairs visited.
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& number_density,
                             const NeighborList& nl, const MpsConstants& c, const PressureProblem& problem,
-                            PressureSourceTerm source, double dt, PressureSystem& sys);
+                            PressureSourceTerm source, double dt, PressureSystem& sys,
+                            const NeighborList* near = nullptr);
 
 }  // namespace mistfall

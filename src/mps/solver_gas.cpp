@@ -66,7 +66,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       if (roles_.open_gas[i] && problem_.unknown[i])
         problem_.extra_rhs[i] = compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]);
   }
-  assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_);
+  assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_,
+                            &near_neighbours_);
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
   report_.gas_ppe_unknowns = system_.particle_of.size();
   gas_pressure_.assign(n, 0.0);

@@ -73,7 +73,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   }
   if (stabilised) stabilisedPressureTerms(dt);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
-  assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_);
+  assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
+                            &near_neighbours_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
   // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step
   if (config_.numerics.gas_pressure_memory && std::isfinite(gas.sound_speed) &&
