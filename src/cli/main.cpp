@@ -6,6 +6,7 @@
 
 #include "cli/classify.hpp"
 #include "cli/exit_codes.hpp"
+#include "cli/openmp_runtime.hpp"
 #include "cli/render_command.hpp"
 #include "cli/run_command.hpp"
 #include "cli/simulate.hpp"
@@ -13,6 +14,7 @@
 #include "io/data_files.hpp"
 
 int main(int argc, char** argv) {
+  mistfall::useShortOpenMpSpin(argv);
   CLI::App app{"mistfall — physically based waterfall animation from a gas-liquid two-phase MPS simulation"};
   app.set_version_flag("--version", std::string("mistfall ") + MISTFALL_VERSION);
   app.require_subcommand(1);
