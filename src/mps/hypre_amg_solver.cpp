@@ -243,6 +243,7 @@ class HypreAmgSolver final : public LinearSolver {
     if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
     setup_matrix_ = nullptr;
     levels_.clear();
+    setup_p0_ = Rows{};  // hypre's arrays are gone
     setup_row_of_.clear();
     keys_.clear();
     uses_ = 0;

@@ -27,9 +27,9 @@ class LinearSolver {
   // x holds the initial guess on entry and the solution on exit. `row_keys` (optional) names what each row is
   // (e.g. the id of the unknown's particle, which it keeps for its life): a solver may precondition this system
   // with what it built for an earlier one whose rows were mostly the same (see reuse below); without keys it
-  // never does. `row_order` (optional): every row
-  // once, in an order that keeps coupled rows close (e.g. the particles sorted by place); the amg solver cuts its
-  // smoother's blocks from it (the result depends on it, not on the thread count).
+  // never does. `row_order` (optional): every row once, in an order that keeps coupled rows close (e.g. the
+  // particles sorted by place); the amg solver cuts its smoother's blocks from it (the result depends on it, not
+  // on the thread count).
   virtual LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                                   Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys = nullptr,
                                   const std::vector<std::int32_t>* row_order = nullptr) = 0;
@@ -43,10 +43,11 @@ class LinearSolver {
 // (the fine level always uses the new matrix, so the tolerance is met; only the number of iterations may grow),
 // for at most `max_reuse` systems and while the iterations stay within `slack` of those after the set-up. Rows
 // may come and go between the systems (a particle joins or leaves the system) while at least `kept_rows` (a
-// fraction of the larger system) of the new rows have a row with the same key in the set-up system: the interpolation to the finest level
-// follows the kept rows to their new place and gives the new rows no coarse correction (the smoother treats
-// them); the cycle stays symmetric positive definite, as conjugate gradients need. max_reuse = 0: a new
-// hierarchy for every system; kept_rows = 1: only for systems of exactly the same rows.
+// fraction of the larger system) of the new rows have a row with the same key in the set-up system: the
+// interpolation to the finest level follows the kept rows to their new place, and a new row interpolates as its
+// kept neighbours do (weighted by its couplings to them); the cycle stays symmetric positive definite, as
+// conjugate gradients need. max_reuse = 0: a new hierarchy for every system; kept_rows = 1: only for systems of
+// exactly the same rows.
 struct PreconditionerReuse {
   int max_reuse = 0;
   int slack = 1;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "mps/divergence.hpp"
-#include "mps/weight.hpp"
+#include "mps/pair_loop.hpp"
 
 namespace mistfall {
 
@@ -48,18 +48,13 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
   // Row lengths (diagonal + unknown neighbours inside re), then fill CSR directly.
   std::vector<std::int64_t> start(rows + 1, 0);
   const double re = c.re_laplacian;
-  // Pairs this far apart are beyond re whatever the rounding of the square root: skipped before computing it.
-  const double beyond2 = re * re * (1.0 + 1e-12);
+  auto isUnknown = [&](std::int32_t j) { return sys.row_of[j] >= 0; };
+  auto takesPart = [&](std::int32_t j) { return takes_part[j] != 0; };
 #pragma omp parallel for schedule(static)
   for (std::int64_t r = 0; r < rows; ++r) {
-    const auto i = sys.particle_of[r];
     std::int64_t count = 1;
-    for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-      const auto j = nl.indices[s];
-      if (sys.row_of[j] < 0) continue;
-      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
-      if (r2 < beyond2 && weight(std::sqrt(r2), re) > 0.0) ++count;
-    }
+    forEachPairWithin<D>(sys.particle_of[r], p.position, nl, re, isUnknown,
+                         [&](std::int32_t, const Vec<D>&, double, double) { ++count; });
     start[r + 1] = count;
   }
   for (std::int64_t r = 0; r < rows; ++r) start[r + 1] += start[r];
@@ -81,13 +76,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     std::int64_t at = start[r];
     std::int64_t diagonal_at = -1;
     double diagonal = 0.0;
-    for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-      const auto j = nl.indices[s];
-      if (!takes_part[j]) continue;
-      const double r2 = (p.position[j] - p.position[i]).squaredNorm();
-      if (r2 >= beyond2) continue;
-      const double w = weight(std::sqrt(r2), re);
-      if (w <= 0.0) continue;
+    forEachPairWithin<D>(i, p.position, nl, re, takesPart, [&](std::int32_t j, const Vec<D>&, double, double w) {
       diagonal += factor * w;
       if (sys.row_of[j] >= 0) {
         if (diagonal_at < 0 && j > i) diagonal_at = at++;
@@ -95,7 +84,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
         value[at] = -factor * w;
         ++at;
       }
-    }
+    });
     if (diagonal_at < 0) diagonal_at = at++;
     const double ci = problem.sound_speed[i];
     if (std::isfinite(ci)) diagonal += 1.0 / (dt * dt * ci * ci);
