@@ -259,6 +259,37 @@ TEST(TwoPhaseTank, LiquidIgnoresOpenAirAndAirStaysAbove) {
   EXPECT_LT(max_gas_speed, 0.1) << "still air over still water";
 }
 
+// What set the time step (StepReport.liquid_dt, dt_set_by_gas; diagnostics.csv's gas_set_dt, liquid_dt_steps): a
+// table of the fastest liquid and gas particles' speeds. dt is the Courant limit of the faster, the liquid's own dt
+// that of the liquid alone, and the gas "sets" dt only when it is the faster and below dt_max's reach.
+TEST(TwoPhaseTimeStep, ReportsWhetherTheGasSetTheStep) {
+  struct Row {
+    double liquid_speed, gas_speed;
+    bool set_by_gas;
+  };
+  for (const Row& row : {Row{0.0, 0.0, false}, Row{2.0, 0.5, false}, Row{0.5, 4.0, true}, Row{0.5, 0.6, false}}) {
+    TankRun run(tankCase(true, false));
+    auto& p = run.state.particles;
+    const double l0 = run.config.numerics.particle_spacing, courant = run.config.numerics.courant;
+    const double dt_max = run.config.numerics.dt_max;
+    bool liquid_set = false, gas_set = false;
+    for (std::size_t i = 0; i < p.size(); ++i) {  // one particle of each phase at its speed
+      if (p.kind[i] != ParticleKind::Fluid) continue;
+      bool& done = p.phase[i] == Phase::Gas ? gas_set : liquid_set;
+      if (done) continue;
+      p.velocity[i] = Vec<2>{p.phase[i] == Phase::Gas ? row.gas_speed : row.liquid_speed, 0.0};
+      done = true;
+    }
+    const auto& report = run.solver->step(1.0);
+    const double liquid_dt = row.liquid_speed > 0 ? std::min(dt_max, courant * l0 / row.liquid_speed) : dt_max;
+    const double fastest = std::max(row.liquid_speed, row.gas_speed);
+    const double dt = fastest > 0 ? std::min(dt_max, courant * l0 / fastest) : dt_max;
+    EXPECT_DOUBLE_EQ(liquid_dt, report.liquid_dt) << row.liquid_speed << " " << row.gas_speed;
+    EXPECT_DOUBLE_EQ(dt, report.dt);
+    EXPECT_EQ(row.set_by_gas, report.dt_set_by_gas);
+  }
+}
+
 // The coarse bubble for 0.15 s: the bubble stays one body with bounded pressure and rises, the water
 // surface far from it stays flat, and no particle of either phase is lost.
 TEST(TwoPhaseBubble, CoarseBubbleRisesAsOneBodyWithBoundedPressure) {

@@ -92,6 +92,8 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::dispersed_gas>("dispersed_gas"),
     column<&DiagnosticsRow::entrained_swaps>("entrained_swaps"),
     column<&DiagnosticsRow::regularised_rows>("regularised_rows"),
+    column<&DiagnosticsRow::gas_set_dt>("gas_set_dt"),
+    column<&DiagnosticsRow::liquid_dt_steps, 9>("liquid_dt_steps"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -47,6 +47,11 @@ struct DiagnosticsRow {
   // numerics.dispersed_gas_fraction, entrained gas that rose by a phase swap (entrained_gas_rise_speed), bubble
   // rows given numerics.bubble_regularisation's sound speed.
   std::int64_t dispersed_gas = 0, entrained_swaps = 0, regularised_rows = 0;
+  // What set the time step since the previous row (issue 17): the steps whose dt the fastest gas particle's
+  // Courant limit made shorter than the liquid's own, and the steps the row's interval would take at the liquid's
+  // dt (the sum of dt / liquid dt over its steps; compare with the step count).
+  std::int64_t gas_set_dt = 0;
+  double liquid_dt_steps = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

@@ -75,13 +75,25 @@ double MpsSolver<D>::particleMass(std::size_t i) const {
 
 template <int D>
 double MpsSolver<D>::maxFluidSpeed() const {
+  const auto [liquid, gas] = maxPhaseSpeeds();
+  return std::max(liquid, gas);
+}
+
+template <int D>
+std::pair<double, double> MpsSolver<D>::maxPhaseSpeeds() const {
   const auto& p = state_.particles;
-  double vmax = 0.0;
+  double liquid = 0.0, gas = 0.0;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for reduction(max : vmax) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i)
-    if (p.kind[i] == ParticleKind::Fluid) vmax = std::max(vmax, p.velocity[i].norm());
-  return vmax;
+#pragma omp parallel for reduction(max : liquid, gas) schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    const double speed = p.velocity[i].norm();
+    if (p.phase[i] == Phase::Gas)
+      gas = std::max(gas, speed);
+    else
+      liquid = std::max(liquid, speed);
+  }
+  return {liquid, gas};
 }
 
 template <int D>
@@ -256,12 +268,18 @@ void MpsSolver<D>::buildNeighbours() {
 }
 
 template <int D>
-double MpsSolver<D>::chooseTimeStepFor(double until) const {
+double MpsSolver<D>::chooseTimeStepFor(double until) {
   // Viscous limit of the phases present (a case without gas is not slowed by the gas viscosity).
   double nu = 0.0;
   for (int ph = 0; ph < 2; ++ph)
     if (phase_present_[ph]) nu = std::max(nu, phases_[ph].kinematic_viscosity);
-  double dt = chooseTimeStep(maxFluidSpeed(), constants_.l0, config_.numerics.courant, nu, config_.numerics.dt_max);
+  const auto [liquid_speed, gas_speed] = maxPhaseSpeeds();
+  double dt = chooseTimeStep(std::max(liquid_speed, gas_speed), constants_.l0, config_.numerics.courant, nu,
+                             config_.numerics.dt_max);
+  // What set it (issue 17, item 4): the step the liquid alone would allow, and whether a gas particle's Courant
+  // limit was the binding one.
+  report_.liquid_dt = chooseTimeStep(liquid_speed, constants_.l0, config_.numerics.courant, nu, config_.numerics.dt_max);
+  report_.dt_set_by_gas = dt < report_.liquid_dt;
   const double remaining = until - state_.time;
   if (remaining < dt) {
     dt = remaining;

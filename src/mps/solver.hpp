@@ -15,6 +15,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -61,6 +62,10 @@ struct StepReport {
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t dispersed_gas = 0;     // gas particles moved with the water by numerics.dispersed_gas_fraction
   std::size_t regularised_rows = 0;  // bubble rows given numerics.bubble_regularisation's sound speed
+  // What set dt: the step the liquid's particles alone allow (Courant, viscosity, dt_max; before the output-time
+  // cut), and whether the fastest gas particle made dt shorter than that.
+  double liquid_dt = 0.0;
+  bool dt_set_by_gas = false;
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
@@ -87,6 +92,7 @@ class MpsSolver {
   const StageTimer& stageTimer() const { return timer_; }
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
+  std::pair<double, double> maxPhaseSpeeds() const;  // fastest liquid and gas particle [m/s]
   double particleMass(std::size_t i) const;
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
   const NeighborList& currentNeighbours();
@@ -96,7 +102,7 @@ class MpsSolver {
  private:
   void buildNeighbours();
   bool hasFullNeighbourhood(std::size_t i, const std::vector<char>& counts) const;
-  double chooseTimeStepFor(double until) const;
+  double chooseTimeStepFor(double until);  // also fills report_.liquid_dt, dt_set_by_gas
   void predict(double dt);
   void collide(double dt);
   void findBubbles();
