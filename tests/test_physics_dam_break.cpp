@@ -1,11 +1,12 @@
 // Dam break against Martin & Moyce (1952), Phil. Trans. R. Soc. A 244, 312-324, Fig. 3:
 // surge-front position Z = z/a against T = t sqrt(2 g / a) for a column of width a and height 2a (n^2 = 2).
-// 2D simulations are known to lead this experiment (its gate took time to lift; the flow was not exactly 2D):
-// ours leads by 12-17 % in Z (paper scheme, l0 = 4 mm; 16-20 % at T = 1.2-2.0 with l0 = 2 mm, and the front moves
-// by about 2 % with round-off-level changes of the pressure solve: docs/validation.md). So we assert
+// 2D simulations are known to lead this experiment (its gate took time to lift; the flow was not exactly 2D).
+// The front is the surge's leading edge, spray ahead of it left out (a lone droplet had moved the T = 2.0 point by
+// 8 % with the summation order alone). Ours leads by 10-16 % in Z (paper scheme, l0 = 4 mm; 16-20 % at T = 1.2-2.0
+// with l0 = 2 mm: docs/validation.md). So we assert
 //  - Z within 20 % of the data at each time,
 //  - the front speed dZ/dT over the constant-speed regime T >= 1.2 (free of the start-up delay and of the
-//    initial acceleration) within 15 % (measured: +9.5 % in 2D),
+//    initial acceleration) within 15 % (measured: +5.8 % in 2D),
 //  - the front speed below Ritter's dry-bed shallow-water bound 2 sqrt(g h0), i.e. dZ/dT < 2 for h0 = 2a.
 // The 3D case is the same column filling the whole depth of a narrow tank (quasi-2D), so it must follow the
 // same curve (measured: within 3 % of the 2D run).
@@ -41,13 +42,22 @@ void checkSurgeFront(const char* case_name, double a, std::size_t points, std::s
   std::size_t k = 0;
   std::vector<double> simulated;
   test_support::runThrough<D>(config, times, [&](double t, const SimulationState<D>& s, const MpsSolver<D>&) {
+    // The surge's leading edge: the most downstream water particle with at least two others within re = 2.1 l0
+    // (spray thrown ahead of the surge does not count: a lone droplet 2.6 l0 ahead moved Z at T = 2.0 from +12 %
+    // to +20 % with the summation order of the sums alone).
+    const auto& p = s.particles;
+    const double l0 = config.numerics.particle_spacing, re = 2.1 * l0;
+    std::vector<std::size_t> water;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == ParticleKind::Fluid) water.push_back(i);
     double front = 0.0;
-    std::size_t fluid = 0;
-    for (std::size_t i = 0; i < s.particles.size(); ++i)
-      if (s.particles.kind[i] == ParticleKind::Fluid) {
-        front = std::max(front, s.particles.position[i][0] + 0.5 * config.numerics.particle_spacing);
-        ++fluid;
-      }
+    for (std::size_t i : water) {
+      if (p.position[i][0] + 0.5 * l0 <= front) continue;
+      int close = 0;
+      for (std::size_t j : water) close += j != i && (p.position[j] - p.position[i]).squaredNorm() < re * re;
+      if (close >= 2) front = p.position[i][0] + 0.5 * l0;
+    }
+    const std::size_t fluid = water.size();
     const double Z = front / a;
     std::printf("%s%dD T = %.3f (t = %.4f s): Z simulated %.3f, Martin & Moyce %.3f (%+.1f%%)\n", stabilised ? "stabilised " : "", D,
                 kMartinMoyce[k].T, t, Z, kMartinMoyce[k].Z, 100.0 * (Z - kMartinMoyce[k].Z) / kMartinMoyce[k].Z);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mps/erase_marked.hpp"
+#include "mps/spatial_order.hpp"
 #include "mps/vector.hpp"
 
 namespace mistfall {
@@ -57,6 +58,10 @@ struct Particles {
   // Removes the particles with remove[i] != 0 from every array, keeping the order of the others.
   void erase(const std::vector<char>& remove) {
     eraseMarked(remove, position, velocity, pressure, number_density, kind, phase, enclosed, id);
+  }
+  // Puts particle order[k] at place k in every array (spatial_order.hpp).
+  void reorder(const std::vector<std::size_t>& order) {
+    permuteAll(order, position, velocity, pressure, number_density, kind, phase, enclosed, id);
   }
   std::size_t count(ParticleKind k, Phase ph) const {
     std::size_t c = 0;

@@ -100,6 +100,7 @@ template <int D>
 const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
+  if (reorder_pending_) sortParticlesBySpace();
   buildNeighbours();
   {
     auto t = timer_.scope(Stage::GasRegions);
@@ -436,6 +437,19 @@ template <int D>
 void MpsSolver<D>::forgetReusedState() {
   liquid_solver_->forget();
   gas_solver_->forget();
+  reorder_pending_ = true;
+}
+
+// The particle arrays in the order of their cells (spatial_order.hpp), at the first step after construction and
+// after each output time: a function of the state only, so a resumed run sorts as the unbroken one did. The
+// neighbour list is made anew for the new indices.
+template <int D>
+void MpsSolver<D>::sortParticlesBySpace() {
+  auto t = timer_.scope(Stage::Neighbours);
+  auto& p = state_.particles;
+  p.reorder(spatialOrder<D>(p.position, domain_lower_, domain_upper_, search_.radius()));
+  search_.build(p.position, p.kind, neighbours_);
+  reorder_pending_ = false;
 }
 
 template <int D>

@@ -101,6 +101,7 @@ class MpsSolver {
 
  private:
   void buildNeighbours();
+  void sortParticlesBySpace();
   bool hasFullNeighbourhood(std::size_t i, const std::vector<char>& counts) const;
   double chooseTimeStepFor(double until);  // also fills report_.liquid_dt, dt_set_by_gas
   void predict(double dt);
@@ -155,6 +156,7 @@ class MpsSolver {
   std::vector<std::int64_t> row_keys_;   // its rows' particle ids (solveLinear)
   std::vector<std::int64_t> row_cell_, cell_start_;
   StepReport report_;
+  bool reorder_pending_ = true;  // sort the particles by place before the next step (spatial_order.hpp)
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
   StageTimer timer_;
   double solve_seconds_ = 0.0;  // setup + solve seconds of the linear solves since the stage began
