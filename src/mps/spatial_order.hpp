@@ -3,7 +3,7 @@
 // other in memory; inflows append, outflows compact and the flow mixes, so the order made by the case's lattice
 // decays. Sorting the arrays by the cell of a grid (spacing `cell`, about the neighbour radius; cells in row-major
 // order, the last axis slowest; stable within a cell) restores it. Measured on waterfall.toml at 5.4-5.5 s (1
-// thread): 159 -> 121 ms a step, the gas's AMG solve 32 -> 21 s. Results change at round-off (sums in another
+// thread): 159 -> 115 ms a step sorted every 100 steps (solver.cpp kSortInterval). Results change at round-off (sums in another
 // order), never in kind; the order is a function of the state only, so a resumed run stays bit-identical.
 #pragma once
 
