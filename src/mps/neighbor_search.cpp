@@ -107,7 +107,9 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
       const std::size_t start = list.size();
       if (particle_cell_[i] >= 0) {
         gather(i, list);
-        std::sort(list.begin() + static_cast<std::ptrdiff_t>(start), list.end());
+        // (already in order when the particles are in cell order: spatial_order.hpp)
+        if (!std::is_sorted(list.begin() + static_cast<std::ptrdiff_t>(start), list.end()))
+          std::sort(list.begin() + static_cast<std::ptrdiff_t>(start), list.end());
       }
       out.offsets[i + 1] = static_cast<std::int64_t>(list.size() - start);
     }

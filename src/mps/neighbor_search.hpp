@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cmath>
 #include <vector>
 
 #include "mps/particles.hpp"
@@ -41,6 +42,11 @@ class NeighborSearch {
 
   double radius() const { return radius_; }
   double skin() const { return skin_; }
+  // The index of the cell holding x (cells in row-major order, the last axis slowest; positions off the grid in its
+  // edge cells, non-finite ones in cell 0): particles in this order make the build's cell lists contiguous.
+  std::int64_t cellKey(const Vec<D>& x) const {
+    return std::isfinite(x.squaredNorm()) ? cellIndex(cellOf(x)) : 0;
+  }
   std::int64_t builds() const { return builds_; }
 
  private:

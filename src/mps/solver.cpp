@@ -452,7 +452,9 @@ template <int D>
 void MpsSolver<D>::sortParticlesBySpace() {
   auto t = timer_.scope(Stage::Neighbours);
   auto& p = state_.particles;
-  p.reorder(spatialOrder<D>(p.position, domain_lower_, domain_upper_, search_.radius()));
+  std::vector<std::int64_t> key(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) key[i] = search_.cellKey(p.position[i]);
+  p.reorder(orderByKey(key));
   search_.build(p.position, p.kind, neighbours_);
   reorder_pending_ = false;
 }
