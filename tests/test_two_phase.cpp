@@ -298,6 +298,28 @@ TEST(TwoPhaseTimeStep, ReportsWhetherTheGasSetTheStep) {
   }
 }
 
+// A time step below numerics.dt_min stops the run with a message that names the fastest particle (its id, phase
+// and role), so that a divergence says whether the water or which air set it off.
+TEST(TwoPhaseTimeStep, DivergenceNamesTheFastestParticle) {
+  for (const Phase phase : {Phase::Liquid, Phase::Gas}) {
+    TankRun run(tankCase(true, false));
+    auto& p = run.state.particles;
+    std::size_t shot = p.size();
+    for (std::size_t i = 0; i < p.size() && shot == p.size(); ++i)
+      if (p.kind[i] == ParticleKind::Fluid && p.phase[i] == phase) shot = i;
+    ASSERT_LT(shot, p.size());
+    p.velocity[shot] = Vec<2>{1e6, 0.0};  // dt = 0.2 l0 / 1e6 m/s = 1e-9 s < dt_min = 1e-8 s
+    const std::string id = "particle id " + std::to_string(p.id[shot]) + ", ";
+    try {
+      run.solver->step(1.0);
+      ADD_FAILURE() << "no divergence";
+    } catch (const DivergenceError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(id + (phase == Phase::Gas ? "open gas" : "liquid")), std::string::npos) << what;
+    }
+  }
+}
+
 // The coarse bubble for 0.15 s: the bubble stays one body with bounded pressure and rises, the water
 // surface far from it stays flat, and no particle of either phase is lost.
 TEST(TwoPhaseBubble, CoarseBubbleRisesAsOneBodyWithBoundedPressure) {

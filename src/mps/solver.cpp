@@ -83,6 +83,24 @@ double MpsSolver<D>::maxFluidSpeed() const {
   return std::max(liquid, gas);
 }
 
+// Which particle is the fastest, for a divergence's message: its id, phase, role and place.
+template <int D>
+std::string MpsSolver<D>::fastestParticle() const {
+  const auto& p = state_.particles;
+  std::size_t fastest = p.size();
+  double top = -1.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.kind[i] == ParticleKind::Fluid && p.velocity[i].norm() > top) top = p.velocity[i].norm(), fastest = i;
+  if (fastest == p.size()) return "no fluid particle";
+  std::ostringstream out;
+  const bool gas = p.phase[fastest] == Phase::Gas;
+  out << "particle id " << p.id[fastest] << ", "
+      << (gas ? (p.enclosed[fastest] ? "gas of an enclosed bubble" : "open gas") : "liquid") << ", at (";
+  for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[fastest][d];
+  out << ") m, pressure " << p.pressure[fastest] << " Pa";
+  return out.str();
+}
+
 template <int D>
 std::pair<double, double> MpsSolver<D>::maxPhaseSpeeds() const {
   const auto& p = state_.particles;
@@ -294,7 +312,7 @@ double MpsSolver<D>::chooseTimeStepFor(double until) {
   if (dt < config_.numerics.dt_min && remaining > config_.numerics.dt_min) {
     std::ostringstream msg;
     msg << "time step " << dt << " s fell below numerics.dt_min = " << config_.numerics.dt_min
-        << " s (max speed " << maxFluidSpeed() << " m/s)";
+        << " s (max speed " << maxFluidSpeed() << " m/s: " << fastestParticle() << ")";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }
   return dt;

@@ -93,6 +93,7 @@ class MpsSolver {
   const NeighborList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   std::pair<double, double> maxPhaseSpeeds() const;  // fastest liquid and gas particle [m/s]
+  std::string fastestParticle() const;               // its id, phase, role and place, in words
   double particleMass(std::size_t i) const;
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
   const NeighborList& currentNeighbours();
