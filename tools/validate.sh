@@ -22,3 +22,10 @@ echo "== still tank, cases/hydrostatic.toml for 10 s at l0 = 8, 4, 2 mm, both sc
 echo "== dam break (3D), cases/dam_break_3d.toml"
 run_case dam_break_3d
 tail -n 1 "$out/dam_break_3d/diagnostics.csv"
+
+echo "== breathing bubble (2D Rayleigh-Plesset) and the gas's stiffness (docs/two-phase.md, issue 16)"
+"$build/mistfall_tests" --gtest_filter='*Breathing*' | grep -E "OK|FAILED" || true
+
+echo "== rising bubble, cases/bubble_rise.toml: rise speed against 0.5 (g R)^(1/2) with the measured nose radius"
+run_case bubble_rise
+/usr/bin/python3 "$(dirname "${BASH_SOURCE[0]}")/bubble_rise.py" "$out/bubble_rise" || true
