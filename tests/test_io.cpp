@@ -161,7 +161,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
-      "gas_set_dt,liquid_dt_steps",
+      "gas_set_dt,liquid_dt_steps,entrained_gas",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -176,7 +176,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.collisions = 7; r.gradient_fallbacks = 8; r.thin_support = 9;
   r.liquid_volume = 0.04003125; r.gas_volume = 0.5; r.gas_compression = -1.25e-3; r.gas_pressure = -173.5;
   r.dispersed_gas = 11; r.entrained_swaps = 12; r.regularised_rows = 13;
-  r.gas_set_dt = 14; r.liquid_dt_steps = 15.25;
+  r.gas_set_dt = 14; r.liquid_dt_steps = 15.25; r.entrained_gas = 16;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -212,6 +212,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(13, rows[0].regularised_rows);
   EXPECT_EQ(14, rows[0].gas_set_dt);
   EXPECT_EQ(15.25, rows[0].liquid_dt_steps);
+  EXPECT_EQ(16, rows[0].entrained_gas);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

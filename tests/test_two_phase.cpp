@@ -175,6 +175,14 @@ TEST(TwoPhaseRoles, BubbleJoinsTheLiquidSystemOpenAirDoesNot) {
   EXPECT_EQ(liquid_walls, 20u * 2u);
   EXPECT_EQ(roles.gas_count, air + bubble_gas);
   EXPECT_EQ(roles.enclosed_count, bubble_gas);
+  EXPECT_EQ(roles.entrained_count, 0u);
+  // Below a bubble's resolution the same gas is entrained: moved as liquid, and counted (diagnostics.csv's
+  // entrained_gas).
+  CouplingRoles small;
+  assignCouplingRoles<2>(p, regions, small, bubble_gas + 1);
+  EXPECT_EQ(small.enclosed_count, 0u);
+  EXPECT_EQ(small.entrained_count, bubble_gas);
+  EXPECT_EQ(small.gas_count, air + bubble_gas);
 }
 
 TEST(TwoPhasePressure, BubbleSystemIsSymmetricWithOneUnknownPerBubble) {

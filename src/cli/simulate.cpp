@@ -201,6 +201,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.regularised_rows = std::exchange(guards.regularised_rows, 0);
     row.gas_set_dt = std::exchange(guards.gas_set_dt, 0);
     row.liquid_dt_steps = std::exchange(guards.liquid_dt_steps, 0.0);
+    row.entrained_gas = std::exchange(guards.entrained_gas, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -234,6 +235,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.regularised_rows += static_cast<std::int64_t>(last.regularised_rows);
         guards.gas_set_dt += last.dt_set_by_gas ? 1 : 0;
         if (last.liquid_dt > 0.0) guards.liquid_dt_steps += last.dt / last.liquid_dt;
+        guards.entrained_gas += static_cast<std::int64_t>(last.entrained_gas);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

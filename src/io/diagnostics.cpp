@@ -94,6 +94,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::regularised_rows>("regularised_rows"),
     column<&DiagnosticsRow::gas_set_dt>("gas_set_dt"),
     column<&DiagnosticsRow::liquid_dt_steps, 9>("liquid_dt_steps"),
+    column<&DiagnosticsRow::entrained_gas>("entrained_gas"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

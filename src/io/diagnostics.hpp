@@ -52,6 +52,10 @@ struct DiagnosticsRow {
   // dt (the sum of dt / liquid dt over its steps; compare with the step count).
   std::int64_t gas_set_dt = 0;
   double liquid_dt_steps = 0;
+  // Gas below a bubble's resolution since the previous row (particle-steps): gas of enclosed regions smaller than
+  // numerics.bubble_min_particles, dispersed gas included, which moves with the water (issue 16: no buoyancy of
+  // its own but entrained_gas_rise_speed's swaps).
+  std::int64_t entrained_gas = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

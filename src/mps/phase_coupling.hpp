@@ -27,6 +27,7 @@ struct CouplingRoles {
   std::vector<char> gas_side_wall;     // walls of the gas system (set by markGasSideWalls)
   std::size_t gas_count = 0;           // gas fluid particles (the gas system's fluid)
   std::size_t enclosed_count = 0;      // gas particles of bubbles
+  std::size_t entrained_count = 0;     // gas particles of enclosed regions below a bubble's size (moved as liquid)
 
   bool inGasSystem(std::size_t i) const { return open_gas[i] || enclosed_gas[i]; }
 
@@ -54,6 +55,7 @@ void assignCouplingRoles(const Particles<D>& p, const GasRegions& regions, Coupl
   roles.gas_side_wall.assign(n, 0);
   roles.gas_count = 0;
   roles.enclosed_count = 0;
+  roles.entrained_count = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!isActive(p.kind[i])) continue;
     const bool gas = isGas(p.kind[i], p.phase[i]);
@@ -64,6 +66,7 @@ void assignCouplingRoles(const Particles<D>& p, const GasRegions& regions, Coupl
     roles.in_liquid_system[i] = !roles.open_gas[i];
     roles.gas_count += gas;
     roles.enclosed_count += resolved;
+    roles.entrained_count += enclosed && !resolved;
   }
 }
 

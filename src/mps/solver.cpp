@@ -232,6 +232,7 @@ void MpsSolver<D>::findBubbles() {
   }
   assignCouplingRoles<D>(state_.particles, regions_, roles_,
                          static_cast<std::size_t>(config_.numerics.bubble_min_particles));
+  report_.entrained_gas = roles_.entrained_count;
 }
 
 // The rules of findGasRegions from the case (enclosed_gas.hpp): in a closed gas domain a gas region below a

@@ -61,6 +61,7 @@ struct StepReport {
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t dispersed_gas = 0;     // gas particles moved with the water by numerics.dispersed_gas_fraction
+  std::size_t entrained_gas = 0;     // gas particles below a bubble's resolution (moved as water; dispersed included)
   std::size_t regularised_rows = 0;  // bubble rows given numerics.bubble_regularisation's sound speed
   // What set dt: the step the liquid's particles alone allow (Courant, viscosity, dt_max; before the output-time
   // cut), and whether the fastest gas particle made dt shorter than that.
