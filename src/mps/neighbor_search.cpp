@@ -8,15 +8,23 @@
 
 namespace mistfall {
 
+namespace {
+// Cells per reach (radius + skin): a particle's candidates are the (2k+1)^D cells around its own, a box of
+// (2 + 1/k) reaches a side instead of 3. Also the grid the particles are sorted by (spatial_order.hpp). Measured,
+// 1 thread: waterfall.toml 5.4-5.5 s 118 (k = 1), 106 (2), 103 ms a step (3); waterfall_small 0-1 s 23.1 -> 21.4 ms;
+// the 40k dam break's first steps 92 -> 79 ms.
+constexpr int kCellsPerReach = 3;
+}  // namespace
+
 template <int D>
 NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin)
-    : radius_(radius), skin_(skin), cell_size_(radius + skin) {
+    : radius_(radius), skin_(skin), cell_size_((radius + skin) / kCellsPerReach) {
   if (!(radius > 0.0)) throw std::invalid_argument("neighbour search radius must be positive");
   if (!(skin >= 0.0)) throw std::invalid_argument("neighbour search skin must not be negative");
   // One spare cell on each side so that neighbours of boundary cells never fall off the grid.
-  lower_ = lower.array() - cell_size_;
+  lower_ = lower.array() - kCellsPerReach * cell_size_;
   for (int k = 0; k < D; ++k) {
-    cells_[k] = static_cast<std::int64_t>(std::ceil((upper[k] - lower[k]) / cell_size_)) + 2;
+    cells_[k] = static_cast<std::int64_t>(std::ceil((upper[k] - lower[k]) / cell_size_)) + 2 * kCellsPerReach;
     if (cells_[k] < 1) cells_[k] = 1;
   }
 }
@@ -72,8 +80,8 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
     const auto c = cellOf(position[i]);
     Eigen::Matrix<std::int64_t, D, 1> lo, hi;
     for (int k = 0; k < D; ++k) {
-      lo[k] = std::max<std::int64_t>(c[k] - 1, 0);
-      hi[k] = std::min<std::int64_t>(c[k] + 1, cells_[k] - 1);
+      lo[k] = std::max<std::int64_t>(c[k] - kCellsPerReach, 0);
+      hi[k] = std::min<std::int64_t>(c[k] + kCellsPerReach, cells_[k] - 1);
     }
     const Vec<D> xi = position[i];
     Eigen::Matrix<std::int64_t, D, 1> cc = lo;

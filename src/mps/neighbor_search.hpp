@@ -1,5 +1,5 @@
-// Cell-linked-list neighbour search. Particles are binned into cubic cells of edge >= radius + skin; each
-// particle's neighbours (all j != i with |r_j - r_i| < radius + skin) are gathered from the 3^D surrounding cells
+// Cell-linked-list neighbour search. Particles are binned into cubic cells of edge (radius + skin) / 3; each
+// particle's neighbours (all j != i with |r_j - r_i| < radius + skin) are gathered from the 7^D surrounding cells
 // into a compressed list (CSR), each particle's list in ascending index order. OpenMP-parallel over particles; the
 // result does not depend on the thread count.
 //
