@@ -3,8 +3,8 @@
 // other in memory; inflows append, outflows compact and the flow mixes, so the order made by the case's lattice
 // decays. Sorting the arrays by the cell of the neighbour search's grid (cells in row-major order, the last axis
 // slowest; stable within a cell) restores it, and makes the build's cell lists runs of consecutive particles.
-// Measured on waterfall.toml at 5.4-5.5 s (1 thread): 159 -> 115 ms a step sorted every 100 steps (solver.cpp
-// kSortInterval). Results change at round-off (sums in another order), never in kind; the order is a function of
+// Measured on waterfall.toml at 5.4-5.5 s (1 thread): 159 -> 118 ms a step sorted every 100 steps (solver.cpp
+// kSortInterval), 103 with the search's cells a third of its reach (neighbor_search.cpp). Results change at round-off (sums in another order), never in kind; the order is a function of
 // the state only, so a resumed run stays bit-identical.
 #pragma once
 
