@@ -84,14 +84,16 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
       hi[k] = std::min<std::int64_t>(c[k] + kCellsPerReach, cells_[k] - 1);
     }
     const Vec<D> xi = position[i];
+    // The cells of one row along the first axis are consecutive, so each row is one run of `sorted_`.
+    const std::int64_t row_cells = hi[0] - lo[0];
     Eigen::Matrix<std::int64_t, D, 1> cc = lo;
     while (true) {
-      const std::int64_t cell = cellIndex(cc);
-      for (std::int64_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
+      const std::int64_t first_cell = cellIndex(cc);
+      for (std::int64_t s = cell_start_[first_cell]; s < cell_start_[first_cell + row_cells + 1]; ++s) {
         const std::int32_t j = sorted_[s];
         if (j != i && (position[j] - xi).squaredNorm() < r2) list.push_back(j);
       }
-      int k = 0;
+      int k = 1;
       for (; k < D; ++k) {
         if (++cc[k] <= hi[k]) break;
         cc[k] = lo[k];
