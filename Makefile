@@ -26,8 +26,8 @@ install: build
 
 # The whole pipeline on the waterfall (mistfall run: simulate with inline classification, texture, render) over
 # the paper's whole 8.5 s, rendered every 0.1 s (86 frames, render.frame_interval), and a contact sheet of the
-# paper's Fig. 6/7 instants t/T = 76, 77 and 85 of 85 (docs/render.md). Measured on the idle 2-core machine: 12 min
-# 43 s (simulate 8.5 min, texture 1, render 3.2), 662 MB; set DEMO_UNTIL=0.8 for a quick look (the contact sheet
+# paper's Fig. 6/7 instants t/T = 76, 77 and 85 of 85 (docs/render.md). Measured on the idle 2-core machine: 11 min
+# 19 s (simulate 6.6 min, texture 1.1, render 3.3), 697 MB; set DEMO_UNTIL=0.8 for a quick look (the contact sheet
 # then has no frames).
 DEMO_CASE ?= cases/waterfall_small.toml
 DEMO_UNTIL ?= 8.5
