@@ -21,7 +21,7 @@ NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, doub
     : radius_(radius), skin_(skin), cell_size_((radius + skin) / kCellsPerReach) {
   if (!(radius > 0.0)) throw std::invalid_argument("neighbour search radius must be positive");
   if (!(skin >= 0.0)) throw std::invalid_argument("neighbour search skin must not be negative");
-  // One spare cell on each side so that neighbours of boundary cells never fall off the grid.
+  // kCellsPerReach spare cells on each side so that neighbours of boundary cells never fall off the grid.
   lower_ = lower.array() - kCellsPerReach * cell_size_;
   for (int k = 0; k < D; ++k) {
     cells_[k] = static_cast<std::int64_t>(std::ceil((upper[k] - lower[k]) / cell_size_)) + 2 * kCellsPerReach;
