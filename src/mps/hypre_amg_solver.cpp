@@ -38,6 +38,9 @@ constexpr int kChunks = 64;  // dot-product chunks
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
 // Loops over fewer rows run on one thread (a parallel region costs more than they do; the bits are the same).
 constexpr std::int64_t kParallelRows = 8192;
+// After the n-th kept hierarchy in a row that failed, none is tried for 2^(n-1) systems, 2^kMaxBackoff at most
+// (where rows change at a free surface every step, a kept hierarchy fails every time: the 40k dam break).
+constexpr int kMaxBackoff = 6;
 
 // A ParCSR copy of `a` on MPI_COMM_SELF for hypre's setup: one diagonal block, each row's diagonal entry first.
 hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
@@ -203,8 +206,10 @@ class HypreAmgSolver final : public LinearSolver {
     if (!a.isCompressed()) throw std::logic_error("the amg solver needs a compressed matrix");
     const double t0 = omp_get_wtime();
     if (x.size() != rows) x.setZero(rows);
-    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_keys && uses_ < reuse_.max_reuse &&
+    // A kept hierarchy is tried while it did well last time, and not for `skip_` systems after one failed.
+    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_keys && uses_ < reuse_.max_reuse && skip_ == 0 &&
                        last_iterations_ <= setup_iterations_ + reuse_.slack && followRows(a, *row_keys);
+    if (skip_ > 0) --skip_;
     const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
@@ -213,18 +218,26 @@ class HypreAmgSolver final : public LinearSolver {
       setUp(a, row_keys, row_order);
     }
     double t1 = omp_get_wtime();
-    int iterations = iterate(b, x);
+    // A reused hierarchy gets the iterations of a new one twice over: past that it is dropped (where the rows
+    // changed at a free surface it may need four times as many, which costs more than a setup).
+    int iterations = iterate(b, x, reuse ? 2 * std::max(setup_iterations_, 1) + reuse_.slack : max_iterations_);
     double setup_seconds = t1 - t0;
     bool converged = relativeResidual(a, b, x) <= tolerance_ * 10.0;
-    if (reuse && !converged) {  // the kept hierarchy did not do: afresh
+    double abandoned_seconds = 0.0;
+    if (reuse && !converged) {  // the kept hierarchy did not do: afresh, and wait 1, 2, 4 ... systems to try again
       x = guess;
+      result.abandoned_iterations = iterations;
+      skip_ = 1 << std::min(failures_, kMaxBackoff);
+      ++failures_;
       const double t2 = omp_get_wtime();
+      abandoned_seconds = t2 - t1;
       setUp(a, row_keys, row_order);
       t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
-      iterations = iterate(b, x);
+      iterations = iterate(b, x, max_iterations_);
       result.reused = false;
     } else {
+      if (reuse) failures_ = 0;
       result.reused = reuse;
     }
     if (uses_ == 0) setup_iterations_ = iterations;
@@ -233,11 +246,20 @@ class HypreAmgSolver final : public LinearSolver {
     result.relative_residual = relativeResidual(a, b, x);
     result.converged = result.relative_residual <= tolerance_ * 10.0;
     result.setup_seconds = setup_seconds;
-    result.solve_seconds = omp_get_wtime() - t1;
+    result.solve_seconds = omp_get_wtime() - t1 + abandoned_seconds;
     return result;
   }
 
   void forget() override {
+    dropHierarchy();
+    skip_ = 0;
+    failures_ = 0;
+  }
+
+  const char* name() const override { return "amg"; }
+
+ private:
+  void dropHierarchy() {
     if (amg_) HYPRE_BoomerAMGDestroy(amg_);
     amg_ = nullptr;
     if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
@@ -249,9 +271,6 @@ class HypreAmgSolver final : public LinearSolver {
     uses_ = 0;
   }
 
-  const char* name() const override { return "amg"; }
-
- private:
   struct Level {
     Rows a;                   // the level's operator (level 0: the system being solved, set per solve)
     Rows p;                   // interpolation from the next level (not on the coarsest)
@@ -293,7 +312,7 @@ class HypreAmgSolver final : public LinearSolver {
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
   void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys,
              const std::vector<std::int32_t>* row_order) {
-    forget();
+    dropHierarchy();
     setup_matrix_ = parCsrCopy(a);
     HYPRE_BoomerAMGCreate(&amg_);
     HYPRE_BoomerAMGSetPrintLevel(amg_, 0);
@@ -507,8 +526,9 @@ class HypreAmgSolver final : public LinearSolver {
     smooth(level, false);
   }
 
-  // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b|. Returns the iterations.
-  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b| or after max_iterations. Returns the
+  // iterations.
+  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_iterations) {
     const std::int64_t n = b.size();
     r_.resize(n);
     q_.resize(n);
@@ -527,7 +547,7 @@ class HypreAmgSolver final : public LinearSolver {
     precondition();
     p_ = z_;
     double rz = dot(r_, z_);
-    while (iterations < max_iterations_) {
+    while (iterations < max_iterations) {
       fine_.multiply(p_, q_);
       const double alpha = rz / dot(p_, q_);
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
@@ -566,6 +586,8 @@ class HypreAmgSolver final : public LinearSolver {
   OwnedRows followed_p0_;   // ... fitted to the rows of a later system (followRows)
   int uses_ = 0;  // systems solved with the kept hierarchy since its setup
   int setup_iterations_ = 0, last_iterations_ = 0;
+  int skip_ = 0;      // systems to set up afresh before a kept hierarchy is tried again
+  int failures_ = 0;  // kept hierarchies abandoned in a row
 };
 
 }  // namespace
