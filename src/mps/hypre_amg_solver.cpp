@@ -25,6 +25,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "mps/amg_rows.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/mpi_environment.hpp"
 
@@ -32,12 +33,16 @@ namespace mistfall {
 
 namespace {
 
+using amg::dot;
+using amg::kParallelRows;
+using amg::OwnedRows;
+using amg::Rows;
+using amg::rowsOf;
+using amg::transposeOf;
+
 constexpr int kBlocks = 8;   // smoother blocks at most (the results do not depend on the thread count)
 constexpr std::int64_t kMinBlockRows = 2048;  // rows per block at least (thin blocks smooth worse, and slower)
-constexpr int kChunks = 64;  // dot-product chunks
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
-// Loops over fewer rows run on one thread (a parallel region costs more than they do; the bits are the same).
-constexpr std::int64_t kParallelRows = 8192;
 // After the n-th kept hierarchy in a row that failed, none is tried for 2^(n-1) systems, 2^kMaxBackoff at most
 // (where rows change at a free surface every step, a kept hierarchy fails every time: the 40k dam break).
 constexpr int kMaxBackoff = 6;
@@ -82,37 +87,6 @@ hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor
   return m;
 }
 
-// Rows of a sparse matrix (borrowed arrays) and where each row's diagonal entry is.
-struct Rows {
-  std::int64_t n = 0;
-  const int* start = nullptr;
-  const int* column = nullptr;
-  const double* value = nullptr;
-  std::vector<int> diagonal;  // index of a_ii in column/value (square matrices)
-
-  void findDiagonal() {
-    diagonal.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-    for (std::int64_t i = 0; i < n; ++i) {
-      diagonal[i] = -1;
-      for (int k = start[i]; k < start[i + 1]; ++k)
-        if (column[k] == i) {
-          diagonal[i] = k;
-          break;
-        }
-    }
-  }
-  // out = M v
-  void multiply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-    for (std::int64_t i = 0; i < n; ++i) {
-      double s = 0.0;
-      for (int k = start[i]; k < start[i + 1]; ++k) s += value[k] * v[column[k]];
-      out[i] = s;
-    }
-  }
-};
-
 Rows rowsOf(hypre_ParCSRMatrix* m) {
   hypre_CSRMatrix* d = hypre_ParCSRMatrixDiag(m);
   Rows r;
@@ -121,62 +95,6 @@ Rows rowsOf(hypre_ParCSRMatrix* m) {
   r.column = hypre_CSRMatrixJ(d);
   r.value = hypre_CSRMatrixData(d);
   return r;
-}
-
-Rows rowsOf(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
-  Rows r;
-  r.n = a.rows();
-  r.start = a.outerIndexPtr();
-  r.column = a.innerIndexPtr();
-  r.value = a.valuePtr();
-  return r;
-}
-
-// The transpose of a rows x cols matrix, stored by rows (P^T for the restriction).
-struct OwnedRows {
-  std::vector<int> start, column;
-  std::vector<double> value;
-  Rows rows() const {
-    Rows r;
-    r.n = static_cast<std::int64_t>(start.size()) - 1;
-    r.start = start.data();
-    r.column = column.data();
-    r.value = value.data();
-    return r;
-  }
-};
-
-OwnedRows transposeOf(const Rows& p, std::int64_t cols) {
-  OwnedRows t;
-  const int nnz = p.start[p.n];
-  t.start.assign(cols + 1, 0);
-  for (int k = 0; k < nnz; ++k) ++t.start[p.column[k] + 1];
-  for (std::int64_t c = 0; c < cols; ++c) t.start[c + 1] += t.start[c];
-  t.column.resize(nnz);
-  t.value.resize(nnz);
-  std::vector<int> fill(t.start.begin(), t.start.end() - 1);
-  for (std::int64_t r = 0; r < p.n; ++r)
-    for (int k = p.start[r]; k < p.start[r + 1]; ++k) {
-      const int at = fill[p.column[k]]++;
-      t.column[at] = static_cast<int>(r);
-      t.value[at] = p.value[k];
-    }
-  return t;
-}
-
-// sum_i a_i b_i over fixed chunks of rows, added in order (the same bits on any number of threads).
-double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  std::array<double, kChunks> part{};
-  const std::int64_t n = a.size();
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-  for (int c = 0; c < kChunks; ++c) {
-    double s = 0.0;
-    for (std::int64_t i = n * c / kChunks; i < n * (c + 1) / kChunks; ++i) s += a[i] * b[i];
-    part[c] = s;
-  }
-  double s = 0.0;
-  for (double v : part) s += v;
-  return s;
 }
 
 class HypreAmgSolver final : public LinearSolver {
@@ -300,6 +218,11 @@ class HypreAmgSolver final : public LinearSolver {
         const int i = given ? (*rows_in_order)[at] : static_cast<int>(at);
         order[first[block[i]]++] = i;
       }
+      markInside();
+    }
+    void markInside() {
+      const std::int64_t n = a.n;
+      inside.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) {
         bool in = true;
