@@ -207,7 +207,11 @@ TEST(ClosedGas, CorrectionLimitCapsTheKickOfAPressureOutlierAtASpeedThatDoesNotG
       for (std::size_t i = 0; i < p.size(); ++i) before[p.id[i]] = p.velocity[i];
       const auto& report = box.solver->step(1.0);
       dt = report.dt;
-      if (limited) capped = report.gas_corrections_capped;
+      if (limited) {
+        capped = report.gas_corrections_capped;
+        EXPECT_EQ(report.gas_correction_cuts, capped) << "every cut is the correction limit's";
+        EXPECT_EQ(report.gas_speed_cuts, 0u);
+      }
       const Vec<2> gravity_change(0.0, -9.81 * dt);
       for (std::size_t i = 0; i < p.size(); ++i)
         if (isGas(p.kind[i], p.phase[i]) && p.id[i] != shot)
@@ -245,7 +249,11 @@ TEST(ClosedGas, SpeedLimitHoldsAShotGasParticleAndTheTimeStep) {
     shootGas(p, 20.0);
     const auto& report = box.solver->step(1.0);
     EXPECT_NEAR(report.dt, 0.2 * l0 / 20.0, 1e-12);
-    if (limited) EXPECT_GE(report.gas_corrections_capped, 1u);
+    if (limited) {
+      EXPECT_GE(report.gas_corrections_capped, 1u);
+      EXPECT_EQ(report.gas_speed_cuts, report.gas_corrections_capped) << "every cut is the speed limit's";
+      EXPECT_EQ(report.gas_correction_cuts, 0u);
+    }
     for (std::size_t i = 0; i < p.size(); ++i)
       if (isGas(p.kind[i], p.phase[i])) fastest[limited] = std::max(fastest[limited], p.velocity[i].norm());
     second_dt[limited] = box.solver->step(1.0).dt;

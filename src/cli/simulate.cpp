@@ -202,6 +202,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.gas_set_dt = std::exchange(guards.gas_set_dt, 0);
     row.liquid_dt_steps = std::exchange(guards.liquid_dt_steps, 0.0);
     row.entrained_gas = std::exchange(guards.entrained_gas, 0);
+    row.gas_correction_capped = std::exchange(guards.gas_correction_capped, 0);
+    row.gas_speed_capped = std::exchange(guards.gas_speed_capped, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -236,6 +238,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.gas_set_dt += last.dt_set_by_gas ? 1 : 0;
         if (last.liquid_dt > 0.0) guards.liquid_dt_steps += last.dt / last.liquid_dt;
         guards.entrained_gas += static_cast<std::int64_t>(last.entrained_gas);
+        guards.gas_correction_capped += static_cast<std::int64_t>(last.gas_correction_cuts);
+        guards.gas_speed_capped += static_cast<std::int64_t>(last.gas_speed_cuts);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

@@ -95,6 +95,8 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::gas_set_dt>("gas_set_dt"),
     column<&DiagnosticsRow::liquid_dt_steps, 9>("liquid_dt_steps"),
     column<&DiagnosticsRow::entrained_gas>("entrained_gas"),
+    column<&DiagnosticsRow::gas_correction_capped>("gas_correction_capped"),
+    column<&DiagnosticsRow::gas_speed_capped>("gas_speed_capped"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -56,6 +56,9 @@ struct DiagnosticsRow {
   // numerics.bubble_min_particles, dispersed gas included, which moves with the water (issue 16: no buoyancy of
   // its own but entrained_gas_rise_speed's swaps).
   std::int64_t entrained_gas = 0;
+  // gas_capped split by guard (particle-steps): cut by numerics.gas_correction_limit, by gas_speed_limit (a
+  // correction cut by both counts in both).
+  std::int64_t gas_correction_capped = 0, gas_speed_capped = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

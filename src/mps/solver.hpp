@@ -60,6 +60,8 @@ struct StepReport {
   std::int64_t removed = 0;        // particles removed by outflows in the step
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
+  std::size_t gas_correction_cuts = 0;     // ... by gas_correction_limit
+  std::size_t gas_speed_cuts = 0;          // ... by gas_speed_limit (a correction may be cut by both)
   std::size_t dispersed_gas = 0;     // gas particles moved with the water by numerics.dispersed_gas_fraction
   std::size_t entrained_gas = 0;     // gas particles below a bubble's resolution (moved as water; dispersed included)
   std::size_t regularised_rows = 0;  // bubble rows given numerics.bubble_regularisation's sound speed

@@ -100,25 +100,27 @@ void MpsSolver<D>::correctGas(double dt) {
   // air reached 17-30 m/s that way).
   const double limit = config_.numerics.gas_correction_limit * constants_.l0 / config_.numerics.dt_max;
   const double speed_limit = config_.numerics.gas_speed_limit;
-  std::size_t capped = 0;
-#pragma omp parallel for schedule(static) reduction(+ : capped)
+  std::size_t capped = 0, correction_cuts = 0, speed_cuts = 0;
+#pragma omp parallel for schedule(static) reduction(+ : capped, correction_cuts, speed_cuts)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
     change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, near_neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
     const double size = change[i].norm();
     bool cut = false;
-    if (limit > 0.0 && size > limit) change[i] *= limit / size, cut = true;
+    if (limit > 0.0 && size > limit) change[i] *= limit / size, cut = true, ++correction_cuts;
     // numerics.gas_speed_limit: open gas leaves the correction at most this fast (the correction is shortened so
     // that |u* + u'| <= limit; the bubbles' gas moves with the water).
     if (speed_limit > 0.0 && !roles_.enclosed_gas[i]) {
       const Vec<D> corrected = p.velocity[i] + change[i];
       const double speed = corrected.norm();
-      if (speed > speed_limit) change[i] = corrected * (speed_limit / speed) - p.velocity[i], cut = true;
+      if (speed > speed_limit) change[i] = corrected * (speed_limit / speed) - p.velocity[i], cut = true, ++speed_cuts;
     }
     capped += cut;
   }
   report_.gas_corrections_capped = capped;
+  report_.gas_correction_cuts = correction_cuts;
+  report_.gas_speed_cuts = speed_cuts;
   const bool own_pressure = config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
