@@ -43,9 +43,6 @@ using amg::transposeOf;
 constexpr int kBlocks = 8;   // smoother blocks at most (the results do not depend on the thread count)
 constexpr std::int64_t kMinBlockRows = 2048;  // rows per block at least (thin blocks smooth worse, and slower)
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
-// After the n-th kept hierarchy in a row that failed, none is tried for 2^(n-1) systems, 2^kMaxBackoff at most
-// (where rows change at a free surface every step, a kept hierarchy fails every time: the 40k dam break).
-constexpr int kMaxBackoff = 6;
 
 // A ParCSR copy of `a` on MPI_COMM_SELF for hypre's setup: one diagonal block, each row's diagonal entry first.
 hypre_ParCSRMatrix* parCsrCopy(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
@@ -124,10 +121,8 @@ class HypreAmgSolver final : public LinearSolver {
     if (!a.isCompressed()) throw std::logic_error("the amg solver needs a compressed matrix");
     const double t0 = omp_get_wtime();
     if (x.size() != rows) x.setZero(rows);
-    // A kept hierarchy is tried while it did well last time, and not for `skip_` systems after one failed.
-    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_keys && uses_ < reuse_.max_reuse && skip_ == 0 &&
+    const bool reuse = amg_ && reuse_.max_reuse > 0 && row_keys && uses_ < reuse_.max_reuse &&
                        last_iterations_ <= setup_iterations_ + reuse_.slack && followRows(a, *row_keys);
-    if (skip_ > 0) --skip_;
     const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
@@ -136,26 +131,18 @@ class HypreAmgSolver final : public LinearSolver {
       setUp(a, row_keys, row_order);
     }
     double t1 = omp_get_wtime();
-    // A reused hierarchy gets the iterations of a new one twice over: past that it is dropped (where the rows
-    // changed at a free surface it may need four times as many, which costs more than a setup).
-    int iterations = iterate(b, x, reuse ? 2 * std::max(setup_iterations_, 1) + reuse_.slack : max_iterations_);
+    int iterations = iterate(b, x);
     double setup_seconds = t1 - t0;
     bool converged = relativeResidual(a, b, x) <= tolerance_ * 10.0;
-    double abandoned_seconds = 0.0;
-    if (reuse && !converged) {  // the kept hierarchy did not do: afresh, and wait 1, 2, 4 ... systems to try again
+    if (reuse && !converged) {  // the kept hierarchy did not do: afresh
       x = guess;
-      result.abandoned_iterations = iterations;
-      skip_ = 1 << std::min(failures_, kMaxBackoff);
-      ++failures_;
       const double t2 = omp_get_wtime();
-      abandoned_seconds = t2 - t1;
       setUp(a, row_keys, row_order);
       t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
-      iterations = iterate(b, x, max_iterations_);
+      iterations = iterate(b, x);
       result.reused = false;
     } else {
-      if (reuse) failures_ = 0;
       result.reused = reuse;
     }
     if (uses_ == 0) setup_iterations_ = iterations;
@@ -164,15 +151,11 @@ class HypreAmgSolver final : public LinearSolver {
     result.relative_residual = relativeResidual(a, b, x);
     result.converged = result.relative_residual <= tolerance_ * 10.0;
     result.setup_seconds = setup_seconds;
-    result.solve_seconds = omp_get_wtime() - t1 + abandoned_seconds;
+    result.solve_seconds = omp_get_wtime() - t1;
     return result;
   }
 
-  void forget() override {
-    dropHierarchy();
-    skip_ = 0;
-    failures_ = 0;
-  }
+  void forget() override { dropHierarchy(); }
 
   const char* name() const override { return "amg"; }
 
@@ -449,9 +432,8 @@ class HypreAmgSolver final : public LinearSolver {
     smooth(level, false);
   }
 
-  // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b| or after max_iterations. Returns the
-  // iterations.
-  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_iterations) {
+  // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b|. Returns the iterations.
+  int iterate(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     const std::int64_t n = b.size();
     r_.resize(n);
     q_.resize(n);
@@ -470,7 +452,7 @@ class HypreAmgSolver final : public LinearSolver {
     precondition();
     p_ = z_;
     double rz = dot(r_, z_);
-    while (iterations < max_iterations) {
+    while (iterations < max_iterations_) {
       fine_.multiply(p_, q_);
       const double alpha = rz / dot(p_, q_);
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
@@ -509,8 +491,6 @@ class HypreAmgSolver final : public LinearSolver {
   OwnedRows followed_p0_;   // ... fitted to the rows of a later system (followRows)
   int uses_ = 0;  // systems solved with the kept hierarchy since its setup
   int setup_iterations_ = 0, last_iterations_ = 0;
-  int skip_ = 0;      // systems to set up afresh before a kept hierarchy is tried again
-  int failures_ = 0;  // kept hierarchies abandoned in a row
 };
 
 }  // namespace

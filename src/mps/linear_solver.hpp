@@ -19,7 +19,6 @@ struct LinearSolveResult {
   double setup_seconds = 0.0;  // handing the matrix over and building the preconditioner (wall)
   double solve_seconds = 0.0;  // the iterations and the residual check (wall)
   bool reused = false;         // the preconditioner of an earlier system was used (no setup)
-  int abandoned_iterations = 0;  // iterations with a kept preconditioner that did not converge in its budget
 };
 
 class LinearSolver {
@@ -42,9 +41,7 @@ class LinearSolver {
 
 // Reuse of the preconditioner (amg): the AMG hierarchy of the last set-up system preconditions the next systems
 // (the fine level always uses the new matrix, so the tolerance is met; only the number of iterations may grow),
-// for at most `max_reuse` systems and while the iterations stay within `slack` of those after the set-up. A kept
-// preconditioner that needs more than twice the set-up's iterations (plus slack) is dropped mid-solve, the system
-// is solved afresh, and no kept one is tried for the next 1, 2, 4 ... 64 systems. Rows
+// for at most `max_reuse` systems and while the iterations stay within `slack` of those after the set-up. Rows
 // may come and go between the systems (a particle joins or leaves the system) while at least `kept_rows` (a
 // fraction of the larger system) of the new rows have a row with the same key in the set-up system: the
 // interpolation to the finest level follows the kept rows to their new place, and a new row interpolates as its
