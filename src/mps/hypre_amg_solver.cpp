@@ -155,12 +155,7 @@ class HypreAmgSolver final : public LinearSolver {
     return result;
   }
 
-  void forget() override { dropHierarchy(); }
-
-  const char* name() const override { return "amg"; }
-
- private:
-  void dropHierarchy() {
+  void forget() override {
     if (amg_) HYPRE_BoomerAMGDestroy(amg_);
     amg_ = nullptr;
     if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
@@ -172,6 +167,9 @@ class HypreAmgSolver final : public LinearSolver {
     uses_ = 0;
   }
 
+  const char* name() const override { return "amg"; }
+
+ private:
   struct Level {
     Rows a;                   // the level's operator (level 0: the system being solved, set per solve)
     Rows p;                   // interpolation from the next level (not on the coarsest)
@@ -201,11 +199,6 @@ class HypreAmgSolver final : public LinearSolver {
         const int i = given ? (*rows_in_order)[at] : static_cast<int>(at);
         order[first[block[i]]++] = i;
       }
-      markInside();
-    }
-    void markInside() {
-      const std::int64_t n = a.n;
-      inside.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) {
         bool in = true;
@@ -218,7 +211,7 @@ class HypreAmgSolver final : public LinearSolver {
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
   void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys,
              const std::vector<std::int32_t>* row_order) {
-    dropHierarchy();
+    forget();
     setup_matrix_ = parCsrCopy(a);
     HYPRE_BoomerAMGCreate(&amg_);
     HYPRE_BoomerAMGSetPrintLevel(amg_, 0);
