@@ -4,8 +4,9 @@
 // decays. Sorting the arrays by the cell of the neighbour search's grid (cells in row-major order, the last axis
 // slowest; stable within a cell) restores it, and makes the build's cell lists runs of consecutive particles.
 // Measured on waterfall.toml at 5.4-5.5 s (1 thread): 159 -> 118 ms a step sorted every 100 steps (solver.cpp
-// kSortInterval), 103 with the search's cells a third of its reach (neighbor_search.cpp). Results change at round-off (sums in another order), never in kind; the order is a function of
-// the state only, so a resumed run stays bit-identical.
+// kSortInterval), 103 with the search's cells a third of its reach (neighbor_search.cpp). Results change at
+// round-off (sums in another order), never in kind; the order is a function of the state only, so a resumed run
+// stays bit-identical.
 #pragma once
 
 #include <algorithm>
@@ -16,8 +17,8 @@
 
 namespace mistfall {
 
-// The permutation that sorts particles by `key` (their cell, NeighborSearch::cellKey), stable: order[k] is the index of
-// the particle that goes to place k.
+// The permutation that sorts particles by `key` (their cell, NeighborSearch::cellKey), stable: order[k] is the
+// index of the particle that goes to place k.
 inline std::vector<std::size_t> orderByKey(const std::vector<std::int64_t>& key) {
   std::vector<std::size_t> order(key.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
