@@ -11,7 +11,10 @@
 namespace mistfall::amg {
 
 // Loops over fewer rows run on one thread (a parallel region costs more than they do; the bits are the same).
-constexpr std::int64_t kParallelRows = 8192;
+// 2048 rather than 8192: the waterfall's liquid system (6,500 rows at l0 = 5 mm) and the coarse levels then use
+// both cores; 2 threads, waterfall.toml 8.50-8.55 s 20.8 -> 19.0-19.5 s, waterfall_small 0-0.5 s 15.2-16.9 ->
+// 13.7-14.5 s; 1024 and 512 gave no more (README, "Where the time goes").
+constexpr std::int64_t kParallelRows = 2048;
 constexpr int kChunks = 64;  // dot-product chunks
 
 // Rows of a sparse matrix (borrowed arrays) and where each row's diagonal entry is.
