@@ -404,44 +404,15 @@ void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor
   } else if (static_cast<Eigen::Index>(particle_of.size()) == a.rows()) {
     row_ids_.assign(particle_of.begin(), particle_of.end());
   }
-  // The rows by place (cells of the neighbour search's size, row by row; a bubble's merged unknown last), from the
-  // current positions: the amg solver's smoother blocks are cut from this order.
-  {
-    const auto& position = state_.particles.position;
-    const double h = search_.radius();
-    Eigen::Matrix<std::int64_t, D, 1> cells;
-    std::int64_t count = 1;
-    for (int k = 0; k < D; ++k) {
-      cells[k] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil((domain_upper_[k] - domain_lower_[k]) / h)));
-      count *= cells[k];
-    }
-    const std::size_t rows = row_ids_.size();
-    row_cell_.resize(rows);
-    cell_start_.assign(count + 2, 0);
-    for (std::size_t r = 0; r < rows; ++r) {
-      std::int64_t cell = count;  // bubbles, and anything without a place, last
-      if (row_ids_[r] >= 0) {
-        cell = 0;
-        const Vec<D>& xr = position[row_ids_[r]];
-        for (int k = D - 1; k >= 0; --k) {
-          const double f = std::floor((xr[k] - domain_lower_[k]) / h);
-          const std::int64_t c = std::isfinite(f) ? std::clamp<std::int64_t>(static_cast<std::int64_t>(f), 0, cells[k] - 1) : 0;
-          cell = cell * cells[k] + c;
-        }
-      }
-      row_cell_[r] = cell;
-      ++cell_start_[cell + 1];
-    }
-    for (std::int64_t c = 0; c <= count; ++c) cell_start_[c + 1] += cell_start_[c];
-    row_order_.resize(rows);
-    for (std::size_t r = 0; r < rows; ++r) row_order_[cell_start_[row_cell_[r]]++] = static_cast<std::int32_t>(r);
-  }
+  // The amg solver's smoother blocks are cut from the rows in their own order: rows are numbered in particle order,
+  // and the particle arrays are kept sorted by the neighbour search's cells (spatial_order.hpp), so consecutive
+  // rows are neighbours in space (a bubble's merged unknown comes last).
   // The rows' keys for the reuse of the preconditioner: the particles' ids, which they keep for their life.
   row_keys_.resize(row_ids_.size());
   for (std::size_t r = 0; r < row_ids_.size(); ++r)
     row_keys_[r] = row_ids_[r] >= 0 ? static_cast<std::int64_t>(state_.particles.id[row_ids_[r]]) : row_ids_[r];
   LinearSolver& solver = gas ? *gas_solver_ : *liquid_solver_;
-  const auto result = solver.solve(a, b, x, &row_keys_, &row_order_);
+  const auto result = solver.solve(a, b, x, &row_keys_);
   timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
   timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
   solve_seconds_ += result.setup_seconds + result.solve_seconds;

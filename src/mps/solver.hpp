@@ -156,9 +156,7 @@ class MpsSolver {
   Eigen::VectorXd pressure_unknowns_;
   std::unique_ptr<LinearSolver> liquid_solver_, gas_solver_;
   std::vector<std::int32_t> row_ids_;    // what each row of the system being solved is (solveLinear)
-  std::vector<std::int32_t> row_order_;  // its rows by place (solveLinear)
   std::vector<std::int64_t> row_keys_;   // its rows' particle ids (solveLinear)
-  std::vector<std::int64_t> row_cell_, cell_start_;
   StepReport report_;
   bool reorder_pending_ = true;  // sort the particles by place before the next step (spatial_order.hpp)
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
