@@ -2,7 +2,9 @@
 """Measure the free overfall of a 2D mistfall waterfall run against the classical results (issue 4).
 
 Brink depth: the water over the last `--window` metres of the channel bed before its edge (the brink),
-h_b = (liquid particles there) * l0^2 / window, averaged over the frames from --from to --to. Compared with the
+h_b = (liquid particles there, above the bed's top less l0/2) * l0^2 / window (on mistfall's lattice at l0 = 1 cm the
+water's lowest row lies exactly on the bed's top edge, y = 0.435 m; counting only particles above the edge missed
+about half of that row, a third of the depth, until 2026-11-25), averaged over the frames from --from to --to. Compared with the
 critical depth h_c = (q^2/g)^(1/3) and with Rouse's (1936) brink depth for a free overfall, h_b = 0.715 h_c.
 Nappe: for levels y from one l0 under the brink down to --sheet-bottom, the median x of the liquid downstream of
 the brink in a slab of height l0, pooled over the same frames (the median ignores stray drops; the splash near the
@@ -102,7 +104,7 @@ def run(args):
         liquid = (a["kind"] == KIND_FLUID) & (a["phase"] == 0)
         x, y = a["Points"][liquid, 0], a["Points"][liquid, 1]
         vel = a["velocity"][liquid]
-        at_brink = (x > x_brink - window) & (x <= x_brink) & (y > y_bed)
+        at_brink = (x > x_brink - window) & (x <= x_brink) & (y > y_bed - 0.5 * l0)
         depth.append(at_brink.sum() * l0 * l0 / window)
         if at_brink.any():
             u_mean.append(vel[at_brink, 0].mean())

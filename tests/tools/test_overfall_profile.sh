@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest tools.overfall_profile: tools/overfall_profile.py measures the brink depth and the nappe of a 2D run.
-# A run directory made by hand: two rows of water particles (l0 = 1 cm, so a 2 cm deep channel by the tool's
-# count, depth = N l0^2 / window) moving at (U, V) = (0.7, -0.1) m/s up to the brink, a sheet of particles on the
+# A run directory made by hand: two rows of water particles, the lower on the bed's top edge as on mistfall's
+# lattice at l0 = 1 cm (so a 2 cm deep channel by the tool's count, depth = N l0^2 / window; counting only particles
+# above the edge found 1 cm) moving at (U, V) = (0.7, -0.1) m/s up to the brink, a sheet of particles on the
 # ballistic path of a point leaving the brink's mid-depth with that velocity (three per level and one stray drop
 # far off, which the median must ignore), and a pool. The tool must find the 2 cm depth, the velocity, and the
 # sheet on that path (RMS under 2 mm); bad input exits 1 with a message.
@@ -46,9 +47,10 @@ direction = [1, 0]
 discharge = 0.016
 """)
 pts = []                                  # (x, y, kind, phase)
-for i in range(10):                       # the channel's last 10 cm: 2 rows
+for i in range(10):                       # the channel's last 10 cm: 2 rows, the lower ON the bed's top edge, as
+                                          # on mistfall's lattice at l0 = 1 cm (bed top 0.435 = a lattice point)
     for j in range(2):
-        pts.append((x_brink - 0.095 + i * l0, y_bed + 0.5 * l0 + j * l0, 0, 0))
+        pts.append((x_brink - 0.095 + i * l0, y_bed + j * l0, 0, 0))
 y0 = y_bed + 0.01                         # mid-depth of the 2 cm deep brink
 level = y_bed - l0
 while level > 0.2:
