@@ -28,6 +28,7 @@ share of the entrained air's particle-frames in that depth band) and prints a su
 import math
 import os
 import sys
+import warnings
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from overfall_profile import ROUSE_BRINK_RATIO, read_overfall_case, region_box  # noqa: E402
@@ -118,7 +119,9 @@ def run(args):
     theta = math.atan2(v_b, u_b)
     b0 = q / v0
     centres = 0.5 * (depth_bins[1:] + depth_bins[:-1])
-    u_c = np.nanmedian(np.array(peaks), axis=0)
+    with warnings.catch_warnings():  # depth bands below the water in every frame stay NaN
+        warnings.simplefilter("ignore", RuntimeWarning)
+        u_c = np.nanmedian(np.array(peaks), axis=0)
     s = centres / math.sin(theta)
     corr = [k * v0 * np.sqrt(b0 / s) for k in PLANE_JET_K]
     share, _ = np.histogram(all_depths, bins=depth_bins)

@@ -29,3 +29,6 @@ echo "== breathing bubble (2D Rayleigh-Plesset) and the gas's stiffness (docs/tw
 echo "== rising bubble, cases/bubble_rise.toml: rise speed against 0.5 (g R)^(1/2) with the measured nose radius"
 run_case bubble_rise
 /usr/bin/python3 "$(dirname "${BASH_SOURCE[0]}")/bubble_rise.py" "$out/bubble_rise" || true
+
+echo "== free overfall, water alone, l0 = 10, 7, 5 mm: brink depth against Rouse's 0.715 h_c (docs/waterfall.md)"
+"$(dirname "${BASH_SOURCE[0]}")/validate_overfall.sh" "$build" "$out/overfall"
