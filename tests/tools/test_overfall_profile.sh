@@ -85,10 +85,12 @@ echo "$out"
 import re, sys
 out = sys.argv[1]
 depth = float(re.search(r"brink depth\s+measured ([0-9.]+) cm", out).group(1))
+edge = float(re.search(r"over the last l0 only ([0-9.]+) cm", out).group(1))
 u, v = (float(s) for s in re.search(r"measured U = ([-0-9.]+) m/s, V = ([-0-9.]+) m/s", out).groups())
 rms = float(re.search(r"from the measured brink ([0-9.]+) cm", out).group(1))
 ratio = float(re.search(r"measured/critical = ([0-9.]+)", out).group(1))
 assert abs(depth - 2.0) < 1e-9, depth
+assert abs(edge - 2.0) < 1e-9, edge
 assert abs(u - 0.7) < 1e-9 and abs(v + 0.1) < 1e-9, (u, v)
 assert abs(ratio - 2.0 / 2.967) < 0.002, ratio      # h_c = (0.016^2 / 9.81)^(1/3) = 2.967 cm
 assert rms < 0.2, rms
