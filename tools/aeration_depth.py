@@ -31,8 +31,9 @@ import sys
 import warnings
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from overfall_profile import ROUSE_BRINK_RATIO, read_overfall_case, region_box  # noqa: E402
-from plot_frames import Parser, PlotError, read_pvd, read_vtp, KIND_FLUID  # noqa: E402
+from overfall_profile import (ROUSE_BRINK_RATIO, add_window_arguments, frames_between,  # noqa: E402
+                              read_overfall_case, region_box)
+from plot_frames import Parser, PlotError, read_vtp, KIND_FLUID  # noqa: E402
 
 import numpy as np  # noqa: E402
 import tomllib  # noqa: E402
@@ -52,9 +53,7 @@ def read_case_extra(run_dir):
 def main():
     ap = Parser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir")
-    ap.add_argument("--from", dest="t_from", type=float, default=None,
-                    help="first frame time averaged (s; default: half the last frame's time)")
-    ap.add_argument("--to", dest="t_to", type=float, default=None, help="last frame time averaged (s; default: last)")
+    add_window_arguments(ap)
     args = ap.parse_args()
     try:
         run(args)
@@ -66,13 +65,7 @@ def main():
 def run(args):
     l0, g, q, x_brink, y_bed, _ = read_overfall_case(args.run_dir, "channel_bed", None)
     y_floor, x_weir, y_crest, u_t = read_case_extra(args.run_dir)
-    frames = read_pvd(args.run_dir)
-    t_last = frames[-1][0]
-    t_from = args.t_from if args.t_from is not None else 0.5 * t_last
-    t_to = args.t_to if args.t_to is not None else t_last
-    chosen = [(t, p) for t, p in frames if t_from - 1e-9 <= t <= t_to + 1e-9]
-    if not chosen:
-        raise PlotError(f"no frame between t = {t_from} and {t_to} s")
+    chosen = frames_between(args.run_dir, args.t_from, args.t_to)
     level_lo, level_hi = x_weir - 0.40, x_weir - 0.05
     cap = y_floor + 2.0 * (y_crest - y_floor)
     depth_bins = np.arange(0.0, cap - y_floor + l0, l0)

@@ -65,12 +65,29 @@ def read_overfall_case(run_dir, bed_region, pool_y):
     return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y
 
 
-def main():
-    ap = Parser(description=__doc__.split("\n")[0])
-    ap.add_argument("run_dir")
+def add_window_arguments(ap):
+    """--from and --to: the frames averaged (shared with aeration_depth.py)."""
     ap.add_argument("--from", dest="t_from", type=float, default=None,
                     help="first frame time averaged (s; default: half the last frame's time)")
     ap.add_argument("--to", dest="t_to", type=float, default=None, help="last frame time averaged (s; default: last)")
+
+
+def frames_between(run_dir, t_from, t_to):
+    """[(time, frame path)] of the run's frames from t_from (default: half the last time) to t_to (default: last)."""
+    frames = read_pvd(run_dir)
+    t_last = frames[-1][0]
+    t_from = t_from if t_from is not None else 0.5 * t_last
+    t_to = t_to if t_to is not None else t_last
+    chosen = [(t, path) for t, path in frames if t_from - 1e-9 <= t <= t_to + 1e-9]
+    if not chosen:
+        raise PlotError(f"no frame between t = {t_from} and {t_to} s")
+    return chosen
+
+
+def main():
+    ap = Parser(description=__doc__.split("\n")[0])
+    ap.add_argument("run_dir")
+    add_window_arguments(ap)
     ap.add_argument("--window", type=float, default=None, help="length of the brink window (m; default 2 l0)")
     ap.add_argument("--bed-region", default="channel_bed", help="wall region whose upper downstream corner is the brink")
     ap.add_argument("--pool-y", type=float, default=None, help="pool level (m; default: the crest of region 'weir')")
@@ -87,13 +104,7 @@ def main():
 def run(args):
     l0, g, q, x_brink, y_bed, pool_y = read_overfall_case(args.run_dir, args.bed_region, args.pool_y)
     window = args.window or 2.0 * l0
-    frames = read_pvd(args.run_dir)
-    t_last = frames[-1][0]
-    t_from = args.t_from if args.t_from is not None else 0.5 * t_last
-    t_to = args.t_to if args.t_to is not None else t_last
-    chosen = [(t, path) for t, path in frames if t_from - 1e-9 <= t <= t_to + 1e-9]
-    if not chosen:
-        raise PlotError(f"no frame between t = {t_from} and {t_to} s")
+    chosen = frames_between(args.run_dir, args.t_from, args.t_to)
     bottom = args.sheet_bottom if args.sheet_bottom is not None else pool_y + 0.35 * (y_bed - pool_y)
     if not pool_y < bottom < y_bed - l0:
         raise PlotError(f"--sheet-bottom {bottom} must lie between the pool level {pool_y} and the bed {y_bed} less l0")
