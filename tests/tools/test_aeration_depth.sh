@@ -15,9 +15,11 @@ trap 'rm -rf "$work"' EXIT
 run="$work/run"
 mkdir -p "$run/frames"
 
-"$py" - "$run" <<'PY'
+"$py" - "$run" "$source_dir" <<'PY'
 import math, os, sys
 run = sys.argv[1]
+sys.path.insert(0, os.path.join(sys.argv[2], "tests", "tools"))
+from hand_made_run import write_frames
 l0, g, q, y_bed, level = 0.01, 9.81, 0.016, 0.435, 0.14
 with open(os.path.join(run, "case.toml"), "w") as f:
     f.write(f"""[case]
@@ -67,25 +69,7 @@ for i in range(100):
     pts.append((0.005 + i * l0, -0.005, 1, 0, 0.0))   # the floor's top row
     pts.append((0.005 + i * l0, 0.3, 0, 1, 0.0))      # air above the pool
 pts.append((0.705, 0.145, 0, 1, 0.0))                  # air at the surface, within l0 of the level
-n = len(pts)
-def arr(name, typ, comps, values):
-    return (f'<DataArray type="{typ}" Name="{name}" NumberOfComponents="{comps}" format="ascii">'
-            + " ".join(str(x) for x in values) + "</DataArray>\n")
-for k, t in enumerate((1.0, 1.1)):
-    body = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">\n<PolyData>\n'
-            '<FieldData>' + arr("TIME", "Float64", 1, [t]) + '</FieldData>\n'
-            f'<Piece NumberOfPoints="{n}" NumberOfVerts="0">\n<Points>'
-            + arr("Points", "Float64", 3, [c for p in pts for c in (p[0], p[1], 0.0)]) + '</Points>\n<PointData>\n'
-            + arr("kind", "UInt8", 1, [p[2] for p in pts]) + arr("phase", "UInt8", 1, [p[3] for p in pts])
-            + arr("velocity", "Float64", 3, [c for p in pts for c in (0.0, -p[4], 0.0)])
-            + arr("pressure", "Float64", 1, [0.0] * n)
-            + '</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n')
-    with open(os.path.join(run, "frames", f"frame_{k:05d}.vtp"), "w") as f:
-        f.write(body)
-with open(os.path.join(run, "frames.pvd"), "w") as f:
-    f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n<Collection>\n'
-            '<DataSet timestep="1.0" group="" part="0" file="frames/frame_00000.vtp"/>\n'
-            '<DataSet timestep="1.1" group="" part="0" file="frames/frame_00001.vtp"/>\n</Collection>\n</VTKFile>\n')
+write_frames(run, [1.0, 1.1], [p[:4] for p in pts], [(0.0, -p[4]) for p in pts])
 PY
 
 out=$("$py" "$tool" "$run" --from 1.0)

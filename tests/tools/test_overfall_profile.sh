@@ -16,9 +16,11 @@ trap 'rm -rf "$work"' EXIT
 run="$work/run"
 mkdir -p "$run/frames"
 
-"$py" - "$run" <<'PY'
+"$py" - "$run" "$source_dir" <<'PY'
 import math, os, sys
 run = sys.argv[1]
+sys.path.insert(0, os.path.join(sys.argv[2], "tests", "tools"))
+from hand_made_run import write_frames
 l0, g, u, v = 0.01, 9.81, 0.7, -0.1
 x_brink, y_bed, pool = 0.30, 0.435, 0.11
 with open(os.path.join(run, "case.toml"), "w") as f:
@@ -60,23 +62,7 @@ while level > 0.2:
     level -= l0
 for i in range(60):                       # pool and a wall row
     pts += [(0.005 + i * l0, 0.105, 0, 0), (0.005 + i * l0, -0.005, 1, 0), (0.005 + i * l0, 0.3, 0, 1)]
-n = len(pts)
-def arr(name, typ, comps, values):
-    return (f'<DataArray type="{typ}" Name="{name}" NumberOfComponents="{comps}" format="ascii">'
-            + " ".join(str(x) for x in values) + "</DataArray>\n")
-body = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">\n<PolyData>\n'
-        '<FieldData>' + arr("TIME", "Float64", 1, [0.5]) + '</FieldData>\n'
-        f'<Piece NumberOfPoints="{n}" NumberOfVerts="0">\n<Points>'
-        + arr("Points", "Float64", 3, [c for p in pts for c in (p[0], p[1], 0.0)]) + '</Points>\n<PointData>\n'
-        + arr("kind", "UInt8", 1, [p[2] for p in pts]) + arr("phase", "UInt8", 1, [p[3] for p in pts])
-        + arr("velocity", "Float64", 3, [c for p in pts for c in (u, v, 0.0)])
-        + arr("pressure", "Float64", 1, [0.0] * n)
-        + '</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n')
-with open(os.path.join(run, "frames", "frame_00000.vtp"), "w") as f:
-    f.write(body)
-with open(os.path.join(run, "frames.pvd"), "w") as f:
-    f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n<Collection>\n'
-            '<DataSet timestep="0.5" group="" part="0" file="frames/frame_00000.vtp"/>\n</Collection>\n</VTKFile>\n')
+write_frames(run, [0.5], pts, [(u, v)] * len(pts))
 PY
 
 out=$("$py" "$tool" "$run")

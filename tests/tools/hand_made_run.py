@@ -1,0 +1,34 @@
+"""Frames of a run directory made by hand, for the tool tests (tests/tools/*.sh): ASCII VTK PolyData frames with
+the arrays mistfall writes (kind, phase, velocity, pressure) and the frames.pvd that lists them."""
+import os
+
+
+def _array(name, typ, comps, values):
+    return (f'<DataArray type="{typ}" Name="{name}" NumberOfComponents="{comps}" format="ascii">'
+            + " ".join(str(x) for x in values) + "</DataArray>\n")
+
+
+def write_frames(run, times, points, velocities):
+    """Writes one frame per time into run/frames and run/frames.pvd. points: [(x, y, kind, phase)];
+    velocities: [(u, v)] of the same length, the same in every frame."""
+    os.makedirs(os.path.join(run, "frames"), exist_ok=True)
+    n = len(points)
+    datasets = ""
+    for k, t in enumerate(times):
+        body = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">\n'
+                '<PolyData>\n<FieldData>' + _array("TIME", "Float64", 1, [t]) + '</FieldData>\n'
+                f'<Piece NumberOfPoints="{n}" NumberOfVerts="0">\n<Points>'
+                + _array("Points", "Float64", 3, [c for p in points for c in (p[0], p[1], 0.0)])
+                + '</Points>\n<PointData>\n'
+                + _array("kind", "UInt8", 1, [p[2] for p in points])
+                + _array("phase", "UInt8", 1, [p[3] for p in points])
+                + _array("velocity", "Float64", 3, [c for w in velocities for c in (w[0], w[1], 0.0)])
+                + _array("pressure", "Float64", 1, [0.0] * n)
+                + '</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n')
+        name = f"frame_{k:05d}.vtp"
+        with open(os.path.join(run, "frames", name), "w") as f:
+            f.write(body)
+        datasets += f'<DataSet timestep="{t}" group="" part="0" file="frames/{name}"/>\n'
+    with open(os.path.join(run, "frames.pvd"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n<Collection>\n' + datasets
+                + '</Collection>\n</VTKFile>\n')
