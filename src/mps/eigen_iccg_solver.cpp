@@ -24,8 +24,7 @@ class EigenIccgSolver final : public LinearSolver {
   }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x, const std::vector<std::int64_t>*,
-                          const std::vector<std::int32_t>*) override {
+                          Eigen::VectorXd& x, const std::vector<std::int64_t>*) override {
     LinearSolveResult result;
     if (a.rows() == 0) {
       result.converged = true;

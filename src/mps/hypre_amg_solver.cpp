@@ -105,8 +105,7 @@ class HypreAmgSolver final : public LinearSolver {
   ~HypreAmgSolver() override { forget(); }
 
   LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys,
-                          const std::vector<std::int32_t>* row_order) override {
+                          Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys) override {
     LinearSolveResult result;
     const std::int64_t rows = a.rows();
     if (rows == 0) {
@@ -126,9 +125,9 @@ class HypreAmgSolver final : public LinearSolver {
     const Eigen::VectorXd guess = x;
     if (reuse) {
       ++uses_;
-      useFine(a, row_order);
+      useFine(a);
     } else {
-      setUp(a, row_keys, row_order);
+      setUp(a, row_keys);
     }
     double t1 = omp_get_wtime();
     int iterations = iterate(b, x);
@@ -137,7 +136,7 @@ class HypreAmgSolver final : public LinearSolver {
     if (reuse && !converged) {  // the kept hierarchy did not do: afresh
       x = guess;
       const double t2 = omp_get_wtime();
-      setUp(a, row_keys, row_order);
+      setUp(a, row_keys);
       t1 = omp_get_wtime();
       setup_seconds += t1 - t2;
       iterations = iterate(b, x);
@@ -174,7 +173,6 @@ class HypreAmgSolver final : public LinearSolver {
     Rows a;                   // the level's operator (level 0: the system being solved, set per solve)
     Rows p;                   // interpolation from the next level (not on the coarsest)
     OwnedRows pt;             // P^T
-    std::vector<int> order;   // the rows in smoothing order; block b is order[n b / B .. n (b + 1) / B)
     std::vector<int> block;   // per row: its smoother block
     std::vector<char> inside; // per row: every column in the row's block
     Eigen::VectorXd x, b, r, old;
@@ -182,23 +180,16 @@ class HypreAmgSolver final : public LinearSolver {
     int blocks() const {
       return static_cast<int>(std::clamp<std::int64_t>(a.n / kMinBlockRows, 1, kBlocks));
     }
-    // The blocks: consecutive stretches of `rows_in_order` (of the rows without one), each smoothed in row order.
-    void setOrder(const std::vector<std::int32_t>* rows_in_order) {
+    // The blocks: consecutive stretches of rows, each smoothed in row order. Rows are numbered in particle order,
+    // which the spatial sort keeps by place (spatial_order.hpp), and hypre numbers a coarse level's points in the
+    // order of the fine rows, so a stretch of rows is a region of space on every level.
+    void setBlocks() {
       const std::int64_t n = a.n;
-      const bool given = rows_in_order && static_cast<std::int64_t>(rows_in_order->size()) == n;
       block.resize(n);
       inside.resize(n);
       const int count = blocks();
-      std::vector<std::int64_t> first(count + 1, 0);
-      for (int k = 0; k < count; ++k) {
-        first[k + 1] = n * (k + 1) / count;
-        for (std::int64_t at = n * k / count; at < first[k + 1]; ++at) block[given ? (*rows_in_order)[at] : at] = k;
-      }
-      order.resize(n);
-      for (std::int64_t at = 0; at < n; ++at) {
-        const int i = given ? (*rows_in_order)[at] : static_cast<int>(at);
-        order[first[block[i]]++] = i;
-      }
+      for (int k = 0; k < count; ++k)
+        for (std::int64_t i = n * k / count; i < n * (k + 1) / count; ++i) block[i] = k;
 #pragma omp parallel for schedule(static) if (n >= kParallelRows)
       for (std::int64_t i = 0; i < n; ++i) {
         bool in = true;
@@ -209,8 +200,7 @@ class HypreAmgSolver final : public LinearSolver {
   };
 
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
-  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys,
-             const std::vector<std::int32_t>* row_order) {
+  void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys) {
     forget();
     setup_matrix_ = parCsrCopy(a);
     HYPRE_BoomerAMGCreate(&amg_);
@@ -248,28 +238,8 @@ class HypreAmgSolver final : public LinearSolver {
       level.r.setZero(n);
       level.old.setZero(n);
     }
-    // Smoothing orders: level 0's is given per solve; a coarse level's follows its C-points in the order of the
-    // level above (hypre numbers the coarse points in the order of the fine rows).
-    useFine(a, row_order);
-    for (int l = 1; l < count; ++l) {
-      const Level& fine = levels_[l - 1];
-      hypre_IntArray* marker = hypre_ParAMGDataCFMarkerArray(data) ? hypre_ParAMGDataCFMarkerArray(data)[l - 1] : nullptr;
-      const std::int64_t n_fine = fine.a.n, n_coarse = levels_[l].a.n;
-      std::vector<std::int32_t> coarse_order;
-      if (marker && hypre_IntArraySize(marker) == n_fine) {
-        const HYPRE_Int* cf = hypre_IntArrayData(marker);
-        std::vector<int> coarse_of(n_fine, -1);
-        int count_c = 0;
-        for (std::int64_t i = 0; i < n_fine; ++i)
-          if (cf[i] > 0) coarse_of[i] = count_c++;
-        if (count_c == n_coarse) {
-          coarse_order.reserve(n_coarse);
-          for (int i : fine.order)
-            if (coarse_of[i] >= 0) coarse_order.push_back(coarse_of[i]);
-        }
-      }
-      levels_[l].setOrder(coarse_order.empty() ? nullptr : &coarse_order);
-    }
+    useFine(a);
+    for (int l = 1; l < count; ++l) levels_[l].setBlocks();
     // The coarsest level is solved exactly (dense Cholesky; LDLT if round-off leaves it semi-definite).
     const Rows coarsest = count == 1 ? rowsOf(a) : levels_.back().a;
     coarse_dense_ = coarsest.n <= kMaxDense;
@@ -358,14 +328,14 @@ class HypreAmgSolver final : public LinearSolver {
   }
 
   // Level 0 is the system being solved.
-  void useFine(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int32_t>* row_order) {
+  void useFine(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
     fine_ = rowsOf(a);
     fine_.findDiagonal();
     levels_[0].a = fine_;
-    levels_[0].setOrder(row_order);
+    levels_[0].setBlocks();
   }
 
-  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward through level.order):
+  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward through the rows):
   // in parallel over the blocks, each block's rows in turn, the other blocks' values from before the sweep.
   static void smooth(Level& level, bool forward) {
     const Rows& a = level.a;
@@ -394,9 +364,9 @@ class HypreAmgSolver final : public LinearSolver {
         x[i] = s / a.value[d];
       };
       if (forward)
-        for (std::int64_t at = first; at < last; ++at) relax(level.order[at]);
+        for (std::int64_t i = first; i < last; ++i) relax(i);
       else
-        for (std::int64_t at = last - 1; at >= first; --at) relax(level.order[at]);
+        for (std::int64_t i = last - 1; i >= first; --i) relax(i);
     }
   }
 

@@ -27,12 +27,10 @@ class LinearSolver {
   // x holds the initial guess on entry and the solution on exit. `row_keys` (optional) names what each row is
   // (e.g. the id of the unknown's particle, which it keeps for its life): a solver may precondition this system
   // with what it built for an earlier one whose rows were mostly the same (see reuse below); without keys it
-  // never does. `row_order` (optional): every row once, in an order that keeps coupled rows close (e.g. the
-  // particles sorted by place); the amg solver cuts its smoother's blocks from it (the result depends on it, not
-  // on the thread count).
+  // never does. The amg solver cuts its smoother's blocks from consecutive rows, so rows numbered by place
+  // (the particles sorted by place) smooth best; the result depends on the row order, not on the thread count.
   virtual LinearSolveResult solve(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                                  Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys = nullptr,
-                                  const std::vector<std::int32_t>* row_order = nullptr) = 0;
+                                  Eigen::VectorXd& x, const std::vector<std::int64_t>* row_keys = nullptr) = 0;
   // Drops whatever is kept from earlier systems: the next solve starts afresh. The simulation calls it at every
   // checkpoint, so that a resumed run meets the same state as the unbroken one.
   virtual void forget() {}
