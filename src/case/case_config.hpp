@@ -148,6 +148,11 @@ struct NumericsConfig {
   // The bubble's rows of the gas system use c = min(c_g, this * l0 / dt) (a regularisation: a bubble and its liquid
   // ring form a block with no free surface, whose pressure level an incompressible gas leaves undetermined); 0 = none
   double bubble_regularisation = 10.0;
+  // How water and air share the pressure (docs/two-phase.md). TwoSystems: the paper's coupling as built (a liquid
+  // system with one unknown per bubble, then a gas system with the liquid as moving walls). OneEquation: every fluid
+  // particle of both phases in one variable-density projection with the interparticle density of
+  // interface_density.hpp, on the stabilised scheme; no bubbles, gas system or gas guards.
+  enum class Coupling { TwoSystems, OneEquation } coupling = Coupling::TwoSystems;
 };
 
 struct OutputConfig {

@@ -142,7 +142,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_gas_motion", "bubble_regularisation"});
+                "bubble_gas_motion", "bubble_regularisation", "coupling"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -184,6 +184,11 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     n.bubble_gas_motion = s == 0 ? NumericsConfig::BubbleGasMotion::FollowLiquid
                                  : NumericsConfig::BubbleGasMotion::OwnPressure;
   rd.number(nm, np, "bubble_regularisation", {0.0, 1e6, false, false}, n.bubble_regularisation);
+  if (int s = rd.choice(nm, np, "coupling", {"two_systems", "one_equation"}); s >= 0)
+    n.coupling = s == 0 ? NumericsConfig::Coupling::TwoSystems : NumericsConfig::Coupling::OneEquation;
+  if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
+    rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
+            "corrected gradient and consistent Laplacian; docs/two-phase.md)");
   if (n.gas_domain == GasDomain::Closed && !std::isfinite(c.physics.gas.sound_speed))
     rd.fail("numerics.gas_domain = \"closed\" needs a finite physics.gas.sound_speed (a closed incompressible gas "
             "has no pressure level); allowed \"open\", or a sound speed > 0");
@@ -226,11 +231,12 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   detail::readOpenBoundaries(rd, root, c);
   if (c.numerics.scheme == Scheme::Stabilised) {
     const bool gas = std::any_of(c.regions.begin(), c.regions.end(),
-                                 [](const Region& r) { return r.material == Material::Gas; });
+                                 [](const Region& r) { return r.material == Material::Gas; }) &&
+                     c.numerics.coupling != NumericsConfig::Coupling::OneEquation;
     if (gas || !c.inflows.empty() || !c.outflows.empty())
-      rd.fail(std::string("numerics.scheme = \"stabilised\" is built and validated for water and walls only; this case "
-                          "has ") + (gas ? "gas regions" : "inflow or outflow boundaries") +
-              ": use numerics.scheme = \"paper\" (docs/validation.md)");
+      rd.fail(std::string("numerics.scheme = \"stabilised\" is built and validated for water and walls only (with air: "
+                          "numerics.coupling = \"one_equation\", experimental); this case has ") +
+              (gas ? "gas regions" : "inflow or outflow boundaries") + ": use numerics.scheme = \"paper\" (docs/validation.md)");
   }
   detail::readTexture(rd, root, c);
   detail::readRender(rd, root, c);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mps/divergence.hpp"
+#include "mps/interface_density.hpp"
 #include "mps/pair_loop.hpp"
 
 namespace mistfall {
@@ -34,7 +35,15 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
   const NeighborList& divergence_list = near ? *near : nl;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto& takes_part = problem.takes_part;
-  const double rho = problem.density;
+  const bool variable = !problem.density_of.empty();
+  const double rho = variable ? 1.0 : problem.density;
+  // The pair weight 1/rho_ij of the variable-density system (1 for one density: rho multiplies the source instead).
+  auto coefficient = [&](std::int32_t i, std::int32_t j) {
+    if (!variable) return 1.0;
+    const auto& d = problem.density_of;
+    const auto& phi = problem.interface_distance;
+    return 1.0 / pairDensity(d[i], d[j], phi[i], phi[j]);
+  };
 
   sys.row_of.assign(n, -1);
   sys.particle_of.clear();
@@ -77,17 +86,18 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     std::int64_t diagonal_at = -1;
     double diagonal = 0.0;
     forEachPairWithin<D>(i, p.position, nl, re, takesPart, [&](std::int32_t j, const Vec<D>&, double, double w) {
-      diagonal += factor * w;
+      const double k = factor * w * coefficient(i, j);
+      diagonal += k;
       if (sys.row_of[j] >= 0) {
         if (diagonal_at < 0 && j > i) diagonal_at = at++;
         inner[at] = sys.row_of[j];
-        value[at] = -factor * w;
+        value[at] = -k;
         ++at;
       }
     });
     if (diagonal_at < 0) diagonal_at = at++;
     const double ci = problem.sound_speed[i];
-    if (std::isfinite(ci)) diagonal += 1.0 / (dt * dt * ci * ci);
+    if (std::isfinite(ci)) diagonal += 1.0 / ((variable ? problem.density_of[i] : 1.0) * dt * dt * ci * ci);
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
     const double compression = (number_density[i] - c.n0) / c.n0;

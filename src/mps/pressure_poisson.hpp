@@ -41,6 +41,12 @@ struct PressureProblem {
   std::vector<char> carries_velocity;  // neighbours of the divergence (mixed source only)
   std::vector<double> sound_speed;  // c_i [m/s], infinity = incompressible
   double density = 1.0;             // rho [kg/m^3] of the system's fluid
+  // Water and air in one equation (numerics.coupling = "one_equation", interface_density.hpp): when not empty, the
+  // density of each particle, and the system is the variable-density one, every row divided by rho:
+  //   2D0/(n0 lambda) sum_j w_ij (p_i - p_j) / rho_ij + p_i / (rho_i dt^2 c_i^2) = -<div u*>_i / dt + gamma/dt^2 (n*-n0)/n0
+  // with rho_ij = pairDensity(rho_i, rho_j, phi_i, phi_j) (phi: interface_distance); `density` is then unused.
+  std::vector<double> density_of;
+  std::vector<double> interface_distance;
   std::vector<double> extra_rhs;    // known terms added to row i's right-hand side (empty = none)
 };
 

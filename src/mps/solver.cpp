@@ -160,20 +160,26 @@ const StepReport& MpsSolver<D>::step(double until) {
   }
   double tp = omp_get_wtime();
   solve_seconds_ = 0.0;
-  solveLiquidPressure(dt);  // assembly, then the solve (timed in solveLinear)
+  if (oneEquation())
+    solveOneEquationPressure(dt);
+  else
+    solveLiquidPressure(dt);  // assembly, then the solve (timed in solveLinear)
   timer_.add(Stage::LiquidAssembly, omp_get_wtime() - tp - solve_seconds_);
   {
     auto t = timer_.scope(Stage::LiquidCorrection);
     setLiquidWallPressure();
     report_.seconds_pressure = omp_get_wtime() - tp;
-    correctLiquid(dt);
+    if (oneEquation())
+      correctOneEquation(dt);
+    else
+      correctLiquid(dt);
   }
   if (roles_.enclosed_count > 0) {
     auto t = timer_.scope(Stage::BubbleGas);
     moveBubbleGas(dt);
   }
   // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
-  if (roles_.gas_count > 0) {
+  if (roles_.gas_count > 0 && !oneEquation()) {
     buildNeighbours();
     tp = omp_get_wtime();
     solve_seconds_ = 0.0;
@@ -211,6 +217,23 @@ const StepReport& MpsSolver<D>::step(double until) {
 // particles in the two pressure systems. Without gas every active particle belongs to the liquid system.
 template <int D>
 void MpsSolver<D>::findBubbles() {
+  if (oneEquation()) {  // every active particle in the one equation, each gas particle with its own momentum
+    // Which gas is enclosed by water: in an open gas domain the rest of the gas may border empty space.
+    regions_ = GasRegions{};
+    auto& p = state_.particles;
+    if (phase_present_[static_cast<int>(Phase::Gas)] && config_.numerics.gas_domain == GasDomain::Open) {
+      findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
+                        gasRegionOptions(&p.enclosed));
+      p.enclosed = regions_.enclosed_particle;
+      for (char e : regions_.enclosed) report_.bubbles += (e != 0);
+    }
+    assignCouplingRoles<D>(state_.particles, GasRegions{}, roles_);
+    for (std::size_t i = 0; i < state_.particles.size(); ++i) {
+      roles_.in_liquid_system[i] = isActive(state_.particles.kind[i]);
+      roles_.open_gas[i] = 0;
+    }
+    return;
+  }
   if (phase_present_[static_cast<int>(Phase::Gas)]) {
     auto& p = state_.particles;
     findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
@@ -376,8 +399,10 @@ void MpsSolver<D>::setLiquidWallPressure() {
   auto liquid = [&](std::int32_t j) {
     return in_system[j] && (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow);
   };
-  averageMirroredWallPressure<D>(p.position, p.kind, p.pressure, near_neighbours_, constants_.re_number_density, rho,
-                                 gravity_, liquid);
+  // Each fluid neighbour continues its own pressure with its own density (one density without one_equation).
+  auto density = [&](std::int32_t j) { return oneEquation() ? problem_.density_of[j] : rho; };
+  averageMirroredWallPressure<D>(p.position, p.kind, p.pressure, near_neighbours_, constants_.re_number_density,
+                                 density, gravity_, liquid);
 }
 
 template <int D>

@@ -11,6 +11,8 @@
 //      -> correctGas (open gas: velocity and position; bubble gas: position only)
 //      -> riseEntrainedGas (gas below a bubble's resolution climbs through the water by exchange)
 //   -> markEscaped -> removeOutflow -> checkHealth
+// numerics.coupling = "one_equation" replaces the liquid system, the bubbles and the gas system by one
+// variable-density projection of both phases (solveOneEquationPressure -> correctOneEquation).
 #pragma once
 
 #include <array>
@@ -120,6 +122,11 @@ class MpsSolver {
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
   CorrectedGradient<D> stabilisedGradient(std::size_t i) const;
+  // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
+  bool oneEquation() const { return config_.numerics.coupling == NumericsConfig::Coupling::OneEquation; }
+  void solveOneEquationPressure(double dt);
+  void correctOneEquation(double dt);
+  CorrectedGradient<D> oneEquationGradient(std::size_t i) const;
   void solveGasPressure(double dt);
   void correctGas(double dt);
   void moveBubbleGas(double dt);

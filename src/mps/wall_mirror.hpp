@@ -40,10 +40,11 @@ double mirroredWallTerm(std::size_t i, const std::vector<Vec<D>>& position, cons
   return c.laplacianFactor() * rho * hydrostatic - rho / dt * divergence * (double(D) / c.n0);
 }
 
-// Sets pressure[b] of every wall and dummy particle b from the fluid particles j with carries(j) (0 without any).
-template <int D, class Carries>
+// Sets pressure[b] of every wall and dummy particle b from the fluid particles j with carries(j) (0 without any),
+// each continuing its pressure with its density density(j).
+template <int D, class Density, class Carries>
 void averageMirroredWallPressure(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                                 std::vector<double>& pressure, const NeighborList& nl, double re, double rho,
+                                 std::vector<double>& pressure, const NeighborList& nl, double re, Density&& density,
                                  const Vec<D>& gravity, Carries&& carries) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
 #pragma omp parallel for schedule(static)
@@ -51,7 +52,7 @@ void averageMirroredWallPressure(const std::vector<Vec<D>>& position, const std:
     if (!isMirroredWall(kind[b])) continue;
     double sum = 0.0, sum_w = 0.0;
     forEachPairWithin<D>(b, position, nl, re, carries, [&](std::int32_t j, const Vec<D>& rbj, double, double w) {
-      sum += w * (pressure[j] - rho * gravity.dot(rbj));
+      sum += w * (pressure[j] - density(j) * gravity.dot(rbj));
       sum_w += w;
     });
     pressure[b] = sum_w > 0.0 ? sum / sum_w : 0.0;

@@ -1,0 +1,148 @@
+// numerics.coupling = "one_equation": water and air in one pressure equation (docs/two-phase.md), the step's
+// pressure stage in place of the liquid system, the bubbles and the gas system. Every fluid particle of both
+// phases carries its own pressure and momentum; eqs. (5)-(8) become the variable-density projection
+//   u^{n+1} = u* - dt (1/rho) grad p,   div u^{n+1} = 0 (water),   div u^{n+1} = -(p - p^n)/(rho c^2 dt) (air, eq. (17)),
+// so that row i reads (pressure_poisson.hpp, the variable-density form)
+//   2D0/(n0 lambda) sum_j w_ij (p_i - p_j)/rho_ij + p_i/(rho_i dt^2 c_i^2)
+//     = -<div u*>_i/dt + gamma/dt^2 (n*_i - n0)/n0 + (1 - gamma) p_i^n/(rho_i dt^2 c_i^2) + known terms,
+// with the interparticle density rho_ij of interface_density.hpp (exact for a straight interface at rest) and the
+// stabilised scheme's known terms (solver_liquid_stabilised.cpp) written per unit density: a mirrored wall seen
+// from i holds p_i + rho_i g . r_ib (the pair's term g . r_ib), the missing neighbours of a truncated support carry
+// the last step's (1/rho) grad p, and a free-surface particle holds (l0/2) rho_s |(1/rho) grad p|_s. The correction
+// is the corrected gradient (Khayyer & Gotoh 2011) of the pair terms (p_j - p_i)/rho_ij. Water and air at rest
+// under gravity are then an exact solution, as still water is on the stabilised scheme.
+#include "mps/interface_density.hpp"
+#include "mps/laplacian_consistency.hpp"
+#include "mps/number_density.hpp"
+#include "mps/solver.hpp"
+#include "mps/surface_pressure.hpp"
+#include "mps/wall_mirror.hpp"
+
+namespace mistfall {
+
+// <(1/rho) grad p>_i: the corrected gradient of (p_j - p_i)/rho_ij (mirrored walls: g . r_ij).
+template <int D>
+CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i) const {
+  const auto& p = state_.particles;
+  const auto& rho = problem_.density_of;
+  const auto& phi = problem_.interface_distance;
+  auto carries = [&](std::int32_t j) { return problem_.takes_part[j] != 0 || isMirroredWall(p.kind[j]); };
+  auto difference = [&](std::int32_t j, const Vec<D>& rij) {
+    if (isMirroredWall(p.kind[j])) return gravity_.dot(rij);
+    return (p.pressure[j] - p.pressure[i]) / pairDensity(rho[i], rho[j], phi[i], phi[j]);
+  };
+  return correctedGradientAt<D>(i, p.position, neighbours_, constants_,
+                                config_.numerics.gradient_correction_min_determinant, carries, difference);
+}
+
+template <int D>
+void MpsSolver<D>::solveOneEquationPressure(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
+  const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
+  // Who takes part: every fluid particle; walls are mirrored (no unknown). Densities, sound speeds, phi.
+  problem_.takes_part.assign(n, 0);
+  problem_.unknown.assign(n, 0);
+  problem_.carries_velocity.assign(n, 0);
+  problem_.sound_speed.assign(n, std::numeric_limits<double>::infinity());
+  problem_.density_of.assign(n, phases_[static_cast<int>(Phase::Liquid)].density);
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    const PhaseProperties& phase = phases_[static_cast<int>(p.phase[i])];
+    problem_.takes_part[i] = 1;
+    problem_.carries_velocity[i] = 1;
+    problem_.density_of[i] = phase.density;
+    problem_.sound_speed[i] = phase.sound_speed;
+    // A void inside the fluid is not empty space: in a closed box nothing is a free surface; in an open one only
+    // gas short of neighbours is (the air's top; the gas of a bubble is enclosed and always carries an unknown).
+    const bool short_of_neighbours =
+        p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
+    problem_.unknown[i] = closed || p.phase[i] == Phase::Liquid || p.enclosed[i] || !short_of_neighbours;
+  }
+  problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
+  // Rows with too little fluid around them would be set by the mirrored walls alone: free surface.
+  const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
+  auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
+  std::size_t thin = 0;
+#pragma omp parallel for schedule(static) reduction(+ : thin)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.unknown[i]) continue;
+    if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, fluidSide) < support) {
+      problem_.unknown[i] = 0;
+      ++thin;
+    }
+  }
+  report_.thin_support = thin;
+  // The known terms, from the last step's pressure at r* (solver_liquid_stabilised.cpp, per unit density).
+  std::vector<Vec<D>> last(n, Vec<D>::Zero());
+  surface_pressure_.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.takes_part[i]) continue;
+    last[i] = oneEquationGradient(i).value;
+    if (!problem_.unknown[i])
+      surface_pressure_[i] = problem_.density_of[i] * surfaceParticlePressure<D>(last[i], constants_.l0);
+  }
+  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  problem_.extra_rhs.assign(n, 0.0);
+  const double factor = constants_.laplacianFactor();
+  const auto& rho = problem_.density_of;
+  const auto& phi = problem_.interface_distance;
+  auto inLaplacian = [&](std::int32_t j) { return problem_.takes_part[j] || isMirroredWall(p.kind[j]); };
+  auto atSurface = [&](std::int32_t j) { return surface_pressure_[j] != 0.0; };
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!problem_.unknown[i]) continue;
+    double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, 1.0, gravity_, dt);
+    extra += laplacianConsistencyTerm<D>(i, p.position, neighbours_, constants_, last[i], inLaplacian);
+    double surface = 0.0;
+    forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, atSurface,
+                         [&](std::int32_t j, const Vec<D>&, double, double w) {
+                           surface += w * surface_pressure_[j] / pairDensity(rho[i], rho[j], phi[i], phi[j]);
+                         });
+    // eq. (17)'s memory on the compressible rows (pressure_poisson.hpp), per unit density
+    extra += compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]) / rho[i];
+    problem_.extra_rhs[i] = extra + factor * surface;
+  }
+  assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
+                            &near_neighbours_);
+  solveSystem(p.pressure, "liquid", report_.ppe_iterations);
+  report_.ppe_unknowns = system_.particle_of.size();
+  for (std::int64_t i = 0; i < n; ++i)
+    if (p.kind[i] == ParticleKind::Fluid) p.pressure[i] = surface_pressure_[i];
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) p.pressure[system_.particle_of[r]] = pressure_unknowns_[r];
+}
+
+// u' = -dt <(1/rho) grad p>, u = u* + u', r = r* + dt u', for every fluid particle of both phases.
+template <int D>
+void MpsSolver<D>::correctOneEquation(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  std::vector<Vec<D>> change(n, Vec<D>::Zero());
+  std::size_t fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    const auto gradient = oneEquationGradient(i);
+    fallbacks += gradient.fell_back;
+    change[i] = -dt * gradient.value;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    p.velocity[i] += change[i];
+    p.position[i] += dt * change[i];
+  }
+  report_.gradient_fallbacks = fallbacks;
+}
+
+#define MISTFALL_INSTANTIATE(D)                                                          \
+  template CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t) const; \
+  template void MpsSolver<D>::solveOneEquationPressure(double);                        \
+  template void MpsSolver<D>::correctOneEquation(double);
+MISTFALL_INSTANTIATE(2)
+MISTFALL_INSTANTIATE(3)
+#undef MISTFALL_INSTANTIATE
+
+}  // namespace mistfall
