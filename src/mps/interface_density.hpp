@@ -51,7 +51,7 @@ InterfaceMoments<D> adjacentPairMidpoints(const Particles<D>& p, const NeighborL
   m.normal.assign(n, Vec<D>::Zero());
   m.second.assign(n, Eigen::Matrix<double, D, D>::Zero());
   m.count.assign(n, 0.0);
-  const double adjacent2 = 2.25 * l0 * l0;
+  const double adjacent = 1.5 * l0, adjacent2 = adjacent * adjacent;
 #pragma omp parallel for schedule(static)
   for (std::int64_t a = 0; a < n; ++a) {
     if (p.kind[a] != ParticleKind::Fluid) continue;
@@ -62,10 +62,12 @@ InterfaceMoments<D> adjacentPairMidpoints(const Particles<D>& p, const NeighborL
       const double r2 = rab.squaredNorm();
       if (r2 >= adjacent2) continue;
       const Vec<D> mid = p.position[a] + 0.5 * rab;
-      m.first[a] += mid;
-      m.second[a] += mid * mid.transpose();
-      m.count[a] += 1.0;
-      m.normal[a] += (p.phase[a] == Phase::Liquid ? 1.0 : -1.0) / std::sqrt(r2) * rab;
+      const double r = std::sqrt(r2), fall = 1.0 - r / adjacent;  // a pair's weight: smoothly to 0 at 1.5 l0
+      const double w = fall * fall;
+      m.first[a] += w * mid;
+      m.second[a] += w * mid * mid.transpose();
+      m.count[a] += w;
+      m.normal[a] += (p.phase[a] == Phase::Liquid ? w : -w) / r * rab;
     }
   }
   return m;
