@@ -41,6 +41,13 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const double beta_n0 = config_.numerics.surface_threshold * constants_.n0;
   const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
+  auto gasWithin = [&](std::int64_t i) {
+    bool any = false;
+    forEachPairWithin<D>(i, p.position, near_neighbours_, constants_.re_number_density,
+                         [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Gas; },
+                         [&](std::int32_t, const Vec<D>&, double, double) { any = true; });
+    return any;
+  };
   // Who takes part: every fluid particle; walls are mirrored (no unknown). Densities, sound speeds, phi.
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);
@@ -54,11 +61,13 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     problem_.carries_velocity[i] = 1;
     problem_.density_of[i] = phase.density;
     problem_.sound_speed[i] = phase.sound_speed;
-    // A void inside the fluid is not empty space: in a closed box nothing is a free surface; in an open one only
-    // gas short of neighbours is (the air's top; the gas of a bubble is enclosed and always carries an unknown).
+    // A void inside the fluid is not empty space: in a closed box nothing is a free surface; in an open one a
+    // particle short of neighbours is, if it is gas that water does not enclose (the air's top; a bubble's gas always
+    // carries an unknown) or water with no gas around it (water bordering empty space, not a gap at an interface).
     const bool short_of_neighbours =
         p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
-    problem_.unknown[i] = closed || p.phase[i] == Phase::Liquid || p.enclosed[i] || !short_of_neighbours;
+    const bool borders_space = p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i);
+    problem_.unknown[i] = closed || !short_of_neighbours || !borders_space;
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   // Rows with too little fluid around them would be set by the mirrored walls alone: free surface.
