@@ -16,55 +16,24 @@
 #include <string>
 #include <vector>
 
+#include "support/breathing_bubble.hpp"
 #include "support/run_case.hpp"
 
 using namespace mistfall;
 
 namespace {
 
-constexpr double kBubbleRadius = 0.02, kRingRadius = 0.08, kGasDensity = 1.2, kSoundSpeed = 340.0;
-constexpr double kWallSpeed = 0.05;    // U0 [m/s]: the bubble's area breathes by 2 U0 / (a omega) = 0.7 %
+constexpr double kBubbleRadius = test_support::kBreathingRadius, kRingRadius = test_support::kBreathingRing;
+constexpr double kGasDensity = test_support::kBreathingGasDensity, kSoundSpeed = test_support::kBreathingSoundSpeed;
+constexpr double kWallSpeed = test_support::kBreathingWallSpeed;  // U0: the bubble's area breathes by 0.7 %
 constexpr double kSpacing = 0.0025;    // l0 [m]: the bubble 16 particles across
 constexpr double kTimeStep = 1e-4;     // dt_max [s]: 89 steps a period
 constexpr double kRelaxation = 0.01;   // gamma of the mixed source
 
 std::string breathingCase(double l0, bool memory) {
-  char text[2048];
-  std::snprintf(text, sizeof text, R"(
-[case]
-name = "breathing_bubble"
-dimension = 2
-[domain]
-min = [-0.1, -0.1]
-max = [0.1, 0.1]
-[physics]
-gravity = [0.0, 0.0]
-[physics.gas]
-sound_speed = %g
-density = %g
-[numerics]
-particle_spacing = %g
-dt_max = %g
-pressure_source = "mixed"
-source_relaxation = %g
-gas_pressure_memory = %s
-[output]
-end_time = 1.0
-[[region]]
-name = "ring"
-material = "water"
-shape = "circle"
-center = [0.0, 0.0]
-radius = %g
-[[region]]
-name = "bubble"
-material = "gas"
-shape = "circle"
-center = [0.0, 0.0]
-radius = %g
-)",
-                kSoundSpeed, kGasDensity, l0, kTimeStep, kRelaxation, memory ? "true" : "false", kRingRadius, kBubbleRadius);
-  return text;
+  return test_support::breathingBubbleCase(l0, kTimeStep,
+                                           "pressure_source = \"mixed\"\nsource_relaxation = " + std::to_string(kRelaxation) +
+                                               "\ngas_pressure_memory = " + (memory ? "true" : "false") + "\n");
 }
 
 // The bubble's mean pressure after each step.
@@ -87,21 +56,12 @@ struct Breathing {
 
 Breathing breathe(double l0, bool memory, double until) {
   test_support::SolverRun<2> run(breathingCase(l0, memory), "breathing_bubble.toml");
-  auto& p = run.state.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {  // the water's u = -U0 a / r; the gas squeezed uniformly
-    const double r = std::hypot(p.position[i][0], p.position[i][1]);
-    if (r < 1e-12) continue;
-    const double speed = p.phase[i] == Phase::Liquid ? kWallSpeed * kBubbleRadius / r : kWallSpeed * r / kBubbleRadius;
-    p.velocity[i] = Vec<2>{-speed * p.position[i][0] / r, -speed * p.position[i][1] / r};
-  }
+  test_support::startBreathing(run.state.particles);
   Breathing b;
   while (run.state.time < until - 1e-12) {
     run.solver->step(until);
-    double sum = 0.0;
-    std::size_t count = 0;
-    for (const auto& s : run.solver->currentBubbles()) sum += s.mean_pressure * s.particles, count += s.particles;
     b.time.push_back(run.state.time);
-    b.pressure.push_back(count ? sum / count : 0.0);
+    b.pressure.push_back(test_support::bubbleMeanPressure(*run.solver));
   }
   return b;
 }

@@ -8,6 +8,7 @@
 
 #include "case/case_file.hpp"
 #include "mps/interface_density.hpp"
+#include "support/breathing_bubble.hpp"
 #include "support/run_case.hpp"
 #include "support/tank_walls.hpp"
 
@@ -145,63 +146,27 @@ namespace {
 // expansion (its gas only follows the water); here the air has its own pressure and momentum and breathes out too.
 // The implicit compressibility damps each period by (1 + (omega dt)^2)^(-N/2) = 0.80 for N = 89 steps a period.
 // Measured: peaks 913, -800, 730, -641 Pa, zero crossings every 4.48-4.51 ms (period 8.97 ms, +1.0 %).
-constexpr double kBreathingK = 1.2 * 340.0 * 340.0, kA = 0.02, kB = 0.08, kU0 = 0.05, kBreathingDt = 1e-4;
+constexpr double kBreathingK = test_support::kBreathingGasDensity * test_support::kBreathingSoundSpeed *
+                                test_support::kBreathingSoundSpeed;
+constexpr double kA = test_support::kBreathingRadius, kB = test_support::kBreathingRing;
+constexpr double kU0 = test_support::kBreathingWallSpeed, kBreathingDt = 1e-4;
 
 TEST(OneEquation, BubbleBreathesInAndOutAtTheTwoDimensionalRayleighPlessetFrequency) {
-  const std::string text = R"(
-[case]
-name = "breathing_bubble"
-dimension = 2
-[domain]
-min = [-0.1, -0.1]
-max = [0.1, 0.1]
-[physics]
-gravity = [0.0, 0.0]
-[physics.gas]
-sound_speed = 340.0
-density = 1.2
-[numerics]
-particle_spacing = 0.0025
-dt_max = 1e-4
-scheme = "stabilised"
-coupling = "one_equation"
-collision_distance = 0.8
-pressure_source = "mixed"
-source_relaxation = 0.0
-[output]
-end_time = 1.0
-[[region]]
-name = "ring"
-material = "water"
-shape = "circle"
-center = [0.0, 0.0]
-radius = 0.08
-[[region]]
-name = "bubble"
-material = "gas"
-shape = "circle"
-center = [0.0, 0.0]
-radius = 0.02
-)";
-  test_support::SolverRun<2> run(text, "breathing_bubble.toml");
-  auto& p = run.state.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {  // the water's u = -U0 a / r; the gas squeezed uniformly
-    const double r = std::hypot(p.position[i][0], p.position[i][1]);
-    if (r < 1e-12) continue;
-    const double speed = p.phase[i] == Phase::Liquid ? kU0 * kA / r : kU0 * r / kA;
-    p.velocity[i] = Vec<2>{-speed * p.position[i][0] / r, -speed * p.position[i][1] / r};
-  }
+  test_support::SolverRun<2> run(
+      test_support::breathingBubbleCase(0.0025, kBreathingDt,
+                                        "scheme = \"stabilised\"\ncoupling = \"one_equation\"\ncollision_distance = 0.8\n"
+                                        "pressure_source = \"mixed\"\nsource_relaxation = 0.0\n"),
+      "breathing_bubble.toml");
+  test_support::startBreathing(run.state.particles);
   // The bubble's mean pressure: its zero crossings and the extreme between two of them.
   std::vector<double> zeros, extremes;
   double last = 0.0, last_time = 0.0, extreme = 0.0;
   const double until = 0.028;  // three periods
   while (run.state.time < until - 1e-12) {
     run.solver->step(until);
-    double sum = 0.0;
     std::size_t count = 0;
-    for (const auto& b : run.solver->currentBubbles()) sum += b.mean_pressure * b.particles, count += b.particles;
+    const double P = test_support::bubbleMeanPressure(*run.solver, &count), t = run.state.time;
     ASSERT_GT(count, 150u) << "the bubble broke up at " << run.state.time << " s";
-    const double P = sum / count, t = run.state.time;
     if (std::abs(P) > std::abs(extreme)) extreme = P;
     if (last != 0.0 && (last > 0.0) != (P > 0.0)) {
       zeros.push_back(last_time + (t - last_time) * last / (last - P));
