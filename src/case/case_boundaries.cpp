@@ -3,10 +3,8 @@
 //               discharge (q > 0 [m^2/s]): the buffer's water is driven at U = q / depth along direction,
 //               depth = the box's extent along the axis of gravity.
 //   [[outflow]] name, min, max: fluid entering the box is removed.
-//   [[vent]]    name, min, max: gas inside the box holds the ambient pressure (p = 0; needs gas in the case).
 // Checks: boxes well formed and inside the domain, holding lattice points; the flow axis not the gravity axis;
 // an inflow box overlaps no wall region and no other inflow or outflow box.
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -110,21 +108,6 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
           rd.fail(p + " overlaps inflow \"" + c.inflows[j].name + "\"; allowed an outflow box clear of inflows");
       names.push_back(out.name);
       c.outflows.push_back(out);
-    }
-  }
-  if (const toml::array* a = tables("vent")) {
-    const bool gas = std::any_of(c.regions.begin(), c.regions.end(),
-                                 [](const Region& r) { return r.material == Material::Gas; });
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const toml::table& t = *(*a)[i].as_table();
-      const std::string p = "vent[" + std::to_string(i) + "]";
-      rd.checkKeys(t, p, {"name", "min", "max"});
-      if (!gas) rd.fail(p + " vents gas, and the case has no gas region; allowed in cases with material = \"gas\"");
-      Vent vent;
-      vent.name = uniqueName(rd, t, p, names);
-      readBox(rd, t, p, c, vent.box);
-      names.push_back(vent.name);
-      c.vents.push_back(vent);
     }
   }
 }

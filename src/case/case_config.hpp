@@ -56,14 +56,6 @@ struct Outflow {
   Box box;
 };
 
-// A vent box holds the gas inside it at the ambient pressure (p = 0, a Dirichlet boundary of the gas's pressure
-// equation): a vent pipe through the side walls to the atmosphere, as laboratory weirs ventilate the cavity under
-// the nappe (issue 16, item 3; docs/waterfall.md). The gas keeps moving through it; nothing is created or removed.
-struct Vent {
-  std::string name;
-  Box box;
-};
-
 struct PhaseProperties {
   double density = 1000.0;               // [kg/m^3]
   double kinematic_viscosity = 1.0e-6;   // [m^2/s]
@@ -229,7 +221,6 @@ struct CaseConfig {
   std::vector<Region> regions;
   std::vector<Inflow> inflows;
   std::vector<Outflow> outflows;
-  std::vector<Vent> vents;
   PhysicsConfig physics;
   NumericsConfig numerics;
   OutputConfig output;

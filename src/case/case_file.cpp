@@ -98,7 +98,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const Reader rd(source_name);
   CaseConfig c;
   rd.checkKeys(root, "",
-               {"case", "domain", "physics", "numerics", "output", "classify", "texture", "render", "region", "inflow", "outflow", "vent"});
+               {"case", "domain", "physics", "numerics", "output", "classify", "texture", "render", "region", "inflow", "outflow"});
 
   // [case]
   const toml::table& cs = rd.table(root, "", "case");

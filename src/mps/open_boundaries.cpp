@@ -92,18 +92,9 @@ std::int64_t removeOutflow(Particles<D>& p, const CaseConfig& c) {
   return removed;
 }
 
-template <int D>
-bool insideVent(const Vec<D>& x, const CaseConfig& c) {
-  for (const Vent& vent : c.vents)
-    if (insideBox<D>(x, vent.box)) return true;
-  return false;
-}
-
 template std::int64_t advanceInflows<2>(Particles<2>&, const CaseConfig&, double);
 template std::int64_t advanceInflows<3>(Particles<3>&, const CaseConfig&, double);
 template std::int64_t removeOutflow<2>(Particles<2>&, const CaseConfig&);
 template std::int64_t removeOutflow<3>(Particles<3>&, const CaseConfig&);
-template bool insideVent<2>(const Vec<2>&, const CaseConfig&);
-template bool insideVent<3>(const Vec<3>&, const CaseConfig&);
 
 }  // namespace mistfall

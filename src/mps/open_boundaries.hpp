@@ -5,7 +5,6 @@
 //    upstream-most layer has moved so far that one more lattice layer fits behind it inside the box, that layer
 //    is created, at the box's lattice points across the flow: water enters one layer per l0 / U, so the discharge
 //    is q = U * n * l0 with n the layer's particle count (2D; n = depth / l0 gives q = U * depth).
-//  * Vent: gas inside the box is a Dirichlet boundary (p = 0) of the gas's pressure equation (solver_gas.cpp).
 //  * Outflow: every liquid particle inside an outflow box is removed; the arrays are compacted (order kept). Gas
 //    passes through (the air around a waterfall is not drained by the pool's outlet).
 // Nothing about a buffer is stored between steps but its particles, so a checkpoint restarts it exactly.
@@ -26,9 +25,5 @@ std::int64_t advanceInflows(Particles<D>& p, const CaseConfig& c, double dt);
 // Removes the liquid particles inside an outflow box. Returns how many.
 template <int D>
 std::int64_t removeOutflow(Particles<D>& p, const CaseConfig& c);
-
-// Whether a point lies in a vent box (its gas holds the ambient pressure; case_config.hpp, Vent).
-template <int D>
-bool insideVent(const Vec<D>& x, const CaseConfig& c);
 
 }  // namespace mistfall

@@ -9,7 +9,6 @@
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/gradient.hpp"
 #include "mps/number_density.hpp"
-#include "mps/open_boundaries.hpp"
 #include "mps/solver.hpp"
 
 namespace mistfall {
@@ -17,8 +16,7 @@ namespace mistfall {
 // The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
 // particle within re of gas (at the liquid's corrected positions). n* counts every particle. With
 // numerics.gas_domain = "open" the gas has free-surface particles (p = 0) and open gas pressures are clamped at 0;
-// with "closed" every particle of the system is an unknown and may be below the ambient, except gas in a [[vent]]
-// box, which holds the ambient pressure. In both, a bubble's
+// with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
 // pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
 // P_B comes from the liquid system).
 template <int D>
@@ -45,9 +43,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
-    // Open gas in a vent box holds the ambient pressure (a Dirichlet boundary: open_boundaries.hpp).
-    const bool vented = roles_.open_gas[i] && !config_.vents.empty() && insideVent<D>(p.position[i], config_);
-    problem_.unknown[i] = problem_.takes_part[i] && !vented &&
+    problem_.unknown[i] = problem_.takes_part[i] &&
                           (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
     problem_.carries_velocity[i] = isActive(p.kind[i]);
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure

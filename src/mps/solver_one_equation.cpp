@@ -14,7 +14,6 @@
 #include "mps/interface_density.hpp"
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
-#include "mps/open_boundaries.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -68,8 +67,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     const bool short_of_neighbours =
         p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
     const bool borders_space = p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i);
-    const bool vented = p.phase[i] == Phase::Gas && !config_.vents.empty() && insideVent<D>(p.position[i], config_);
-    problem_.unknown[i] = !vented && (closed || !short_of_neighbours || !borders_space);
+    problem_.unknown[i] = closed || !short_of_neighbours || !borders_space;
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   // Rows with too little fluid around them would be set by the mirrored walls alone: free surface.
