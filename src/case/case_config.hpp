@@ -100,7 +100,7 @@ struct NumericsConfig {
   // Stabilised scheme only (numerical thresholds; how often they act is counted in diagnostics.csv):
   // a fluid particle carries a pressure unknown only if its liquid-side neighbours within the Laplacian radius give
   // at least this fraction of n0 (below it the mirrored walls would dominate its row: it is a free surface)
-  double liquid_support_fraction = 0.3;
+  double liquid_support_fraction = 0.3;  // 2D; the reader sets 0.2 in 3D (below a container corner's 0.29)
   // the corrected gradient falls back to the standard form where det(C_i^-1) is below this (1 on a full lattice)
   double gradient_correction_min_determinant = 0.3;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient

@@ -147,6 +147,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
     n.scheme = s == 0 ? Scheme::Paper : Scheme::Stabilised;
+  // Below the liquid-side support of a particle in a container's corner (a quadrant of the lattice: 0.39 of a full
+  // one in 2D; an octant: 0.29 in 3D), which is no free surface: 0.3 in 2D, 0.2 in 3D.
+  if (c.dimension == 3) n.liquid_support_fraction = 0.2;
   rd.number(nm, np, "liquid_support_fraction", {0.0, 1.0, false, true}, n.liquid_support_fraction);
   rd.number(nm, np, "gradient_correction_min_determinant", {0.0, 1.0, true, false},
             n.gradient_correction_min_determinant);
