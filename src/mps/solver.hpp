@@ -121,6 +121,7 @@ class MpsSolver {
   void correctLiquid(double dt);
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
+  void makeThinRowsFreeSurface();
   CorrectedGradient<D> stabilisedGradient(std::size_t i) const;
   // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
   bool oneEquation() const { return config_.numerics.coupling == NumericsConfig::Coupling::OneEquation; }

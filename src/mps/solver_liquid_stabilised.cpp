@@ -32,24 +32,33 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i) const {
 // After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every
 // row (problem_.extra_rhs) and the Dirichlet values of the free-surface particles (surface_pressure_), from the
 // last step's pressure p^n at r*.
+// Rows whose fluid-side support (the particles taking part, within the Laplacian radius) is below
+// numerics.liquid_support_fraction of n0 would be set by the mirrored walls alone: they become free surface
+// (counted in report_.thin_support). Bubble rows and walls are left alone.
 template <int D>
-void MpsSolver<D>::stabilisedPressureTerms(double dt) {
-  auto& p = state_.particles;
+void MpsSolver<D>::makeThinRowsFreeSurface() {
+  const auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
-  // Rows with too little liquid around them would be set by the mirrored walls alone: free surface.
   const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
-  auto liquidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
+  auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
   std::size_t thin = 0;
 #pragma omp parallel for schedule(static) reduction(+ : thin)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.unknown[i] || roles_.enclosed_gas[i] || p.kind[i] != ParticleKind::Fluid) continue;
-    if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, liquidSide) < support) {
+    if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, fluidSide) < support) {
       problem_.unknown[i] = 0;
       ++thin;
     }
   }
   report_.thin_support = thin;
+}
+
+template <int D>
+void MpsSolver<D>::stabilisedPressureTerms(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
+  makeThinRowsFreeSurface();
   // Walls do not carry velocity in the divergence: mirroredWallTerm adds theirs against u* - g dt.
   for (std::int64_t i = 0; i < n; ++i)
     if (isMirroredWall(p.kind[i])) problem_.carries_velocity[i] = 0;
@@ -80,7 +89,8 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
 
 #define MISTFALL_INSTANTIATE(D)                                                         \
   template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t) const; \
-  template void MpsSolver<D>::stabilisedPressureTerms(double);
+  template void MpsSolver<D>::stabilisedPressureTerms(double);                       \
+  template void MpsSolver<D>::makeThinRowsFreeSurface();
 MISTFALL_INSTANTIATE(2)
 MISTFALL_INSTANTIATE(3)
 #undef MISTFALL_INSTANTIATE

@@ -70,19 +70,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     problem_.unknown[i] = closed || !short_of_neighbours || !borders_space;
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
-  // Rows with too little fluid around them would be set by the mirrored walls alone: free surface.
-  const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
-  auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
-  std::size_t thin = 0;
-#pragma omp parallel for schedule(static) reduction(+ : thin)
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (!problem_.unknown[i]) continue;
-    if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, fluidSide) < support) {
-      problem_.unknown[i] = 0;
-      ++thin;
-    }
-  }
-  report_.thin_support = thin;
+  makeThinRowsFreeSurface();  // solver_liquid_stabilised.cpp
   // The known terms, from the last step's pressure at r* (solver_liquid_stabilised.cpp, per unit density).
   std::vector<Vec<D>> last(n, Vec<D>::Zero());
   surface_pressure_.assign(n, 0.0);
