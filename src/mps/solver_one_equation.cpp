@@ -66,8 +66,8 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     // carries an unknown) or water with no gas around it (water bordering empty space, not a gap at an interface).
     const bool short_of_neighbours =
         p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
-    const bool borders_space = p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i);
-    problem_.unknown[i] = closed || !short_of_neighbours || !borders_space;
+    auto bordersSpace = [&] { return p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i); };
+    problem_.unknown[i] = closed || !short_of_neighbours || !bordersSpace();  // bordersSpace only when short
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   makeThinRowsFreeSurface();  // solver_liquid_stabilised.cpp
