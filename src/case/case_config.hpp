@@ -103,6 +103,9 @@ struct NumericsConfig {
   double liquid_support_fraction = 0.3;  // 2D; the reader sets 0.2 in 3D (below a container corner's 0.29)
   // the corrected gradient falls back to the standard form where det(C_i^-1) is below this (1 on a full lattice)
   double gradient_correction_min_determinant = 0.3;
+  // K of the repulsive part of the stabilised gradient (pressure_repulsion.hpp): zero in a linear pressure field, so
+  // still water keeps its exact equilibrium; 0 = the corrected gradient alone
+  double pressure_repulsion = 2.0;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

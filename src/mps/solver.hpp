@@ -122,12 +122,13 @@ class MpsSolver {
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
   void makeThinRowsFreeSurface();
-  CorrectedGradient<D> stabilisedGradient(std::size_t i) const;
+  // with `repulsive`, plus numerics.pressure_repulsion's term (pressure_repulsion.hpp): the correction's gradient
+  CorrectedGradient<D> stabilisedGradient(std::size_t i, bool repulsive = false) const;
   // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
   bool oneEquation() const { return config_.numerics.coupling == NumericsConfig::Coupling::OneEquation; }
   void solveOneEquationPressure(double dt);
   void correctOneEquation(double dt);
-  CorrectedGradient<D> oneEquationGradient(std::size_t i) const;
+  CorrectedGradient<D> oneEquationGradient(std::size_t i, bool repulsive = false) const;
   void solveGasPressure(double dt);
   void correctGas(double dt);
   void moveBubbleGas(double dt);
@@ -157,6 +158,7 @@ class MpsSolver {
   CouplingRoles roles_;
   PressureProblem problem_;
   std::vector<double> surface_pressure_;     // stabilised: Dirichlet values of free-surface particles (empty: 0)
+  std::vector<Vec<D>> repulsion_normal_;     // stabilised: surface normals of pressureRepulsion (zero: interior)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
   PressureSystem system_;

@@ -148,7 +148,7 @@ void MpsSolver<D>::correctLiquid(double dt) {
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || !in_system[i] || roles_.enclosed_gas[i]) continue;
     if (stabilised) {
-      const auto gradient = stabilisedGradient(i);
+      const auto gradient = stabilisedGradient(i, true);
       fallbacks += gradient.fell_back;
       change[i] = -dt / rho * gradient.value;
       continue;

@@ -6,18 +6,21 @@
 //  * the first-order consistent Laplacian (laplacian_consistency.hpp) and the free-surface particles' pressure half
 //    a spacing inside the surface (surface_pressure.hpp), both from the last step's corrected gradient;
 //  * the corrected gradient (corrected_gradient.hpp, Khayyer & Gotoh 2011) in the correction;
+//  * the repulsive term of numerics.pressure_repulsion in the correction (pressure_repulsion.hpp);
 //  * rows whose liquid-side support is below numerics.liquid_support_fraction of n0 are free surface (counted).
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
+#include "mps/pressure_repulsion.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
 
 namespace mistfall {
 
-// The corrected gradient of the liquid's pressure at particle i (mirrored walls hold p_i + rho g . r_ib).
+// The corrected gradient of the liquid's pressure at particle i (mirrored walls hold p_i + rho g . r_ib); with
+// `repulsive`, on a particle carrying an unknown, plus the repulsive term (pressure_repulsion.hpp).
 template <int D>
-CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i) const {
+CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repulsive) const {
   const auto& p = state_.particles;
   const double rho = phases_[static_cast<int>(Phase::Liquid)].density;
   const auto& in_system = roles_.in_liquid_system;
@@ -25,8 +28,13 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i) const {
   auto difference = [&](std::int32_t j, const Vec<D>& rij) {
     return isMirroredWall(p.kind[j]) ? rho * gravity_.dot(rij) : p.pressure[j] - p.pressure[i];
   };
-  return correctedGradientAt<D>(i, p.position, neighbours_, constants_,
-                                config_.numerics.gradient_correction_min_determinant, carries, difference);
+  auto gradient = correctedGradientAt<D>(i, p.position, neighbours_, constants_,
+                                         config_.numerics.gradient_correction_min_determinant, carries, difference);
+  const double k = config_.numerics.pressure_repulsion;
+  if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
+    gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
+                                           repulsion_normal_[i], carries, difference);
+  return gradient;
 }
 
 // After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every
@@ -71,6 +79,11 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
     if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid)
       surface_pressure_[i] = surfaceParticlePressure<D>(last_gradient[i], constants_.l0);
   }
+  auto freeSurface = [&](std::int32_t j) {
+    return p.kind[j] == ParticleKind::Fluid && problem_.takes_part[j] && !problem_.unknown[j];
+  };
+  if (config_.numerics.pressure_repulsion > 0.0)
+    repulsion_normal_ = repulsionNormals<D>(p.position, neighbours_, constants_.re_laplacian, last_gradient, freeSurface);
   problem_.extra_rhs.assign(n, 0.0);
   const double factor = constants_.laplacianFactor();
   auto inLaplacian = [&](std::int32_t j) { return problem_.takes_part[j] || isMirroredWall(p.kind[j]); };
@@ -88,7 +101,7 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                         \
-  template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t) const; \
+  template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t, bool) const; \
   template void MpsSolver<D>::stabilisedPressureTerms(double);                       \
   template void MpsSolver<D>::makeThinRowsFreeSurface();
 MISTFALL_INSTANTIATE(2)

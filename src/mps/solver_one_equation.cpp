@@ -14,6 +14,7 @@
 #include "mps/interface_density.hpp"
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
+#include "mps/pressure_repulsion.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -22,7 +23,7 @@ namespace mistfall {
 
 // <(1/rho) grad p>_i: the corrected gradient of (p_j - p_i)/rho_ij (mirrored walls: g . r_ij).
 template <int D>
-CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i) const {
+CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i, bool repulsive) const {
   const auto& p = state_.particles;
   const auto& rho = problem_.density_of;
   const auto& phi = problem_.interface_distance;
@@ -31,8 +32,13 @@ CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i) const {
     if (isMirroredWall(p.kind[j])) return gravity_.dot(rij);
     return (p.pressure[j] - p.pressure[i]) / pairDensity(rho[i], rho[j], phi[i], phi[j]);
   };
-  return correctedGradientAt<D>(i, p.position, neighbours_, constants_,
-                                config_.numerics.gradient_correction_min_determinant, carries, difference);
+  auto gradient = correctedGradientAt<D>(i, p.position, neighbours_, constants_,
+                                         config_.numerics.gradient_correction_min_determinant, carries, difference);
+  const double k = config_.numerics.pressure_repulsion;
+  if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
+    gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
+                                           repulsion_normal_[i], carries, difference);
+  return gradient;
 }
 
 template <int D>
@@ -81,6 +87,9 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     if (!problem_.unknown[i])
       surface_pressure_[i] = problem_.density_of[i] * surfaceParticlePressure<D>(last[i], constants_.l0);
   }
+  auto freeSurface = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && !problem_.unknown[j]; };
+  if (config_.numerics.pressure_repulsion > 0.0)
+    repulsion_normal_ = repulsionNormals<D>(p.position, neighbours_, constants_.re_laplacian, last, freeSurface);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   problem_.extra_rhs.assign(n, 0.0);
   const double factor = constants_.laplacianFactor();
@@ -121,7 +130,7 @@ void MpsSolver<D>::correctOneEquation(double dt) {
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
-    const auto gradient = oneEquationGradient(i);
+    const auto gradient = oneEquationGradient(i, true);
     fallbacks += gradient.fell_back;
     change[i] = -dt * gradient.value;
   }
@@ -135,7 +144,7 @@ void MpsSolver<D>::correctOneEquation(double dt) {
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                          \
-  template CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t) const; \
+  template CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t, bool) const; \
   template void MpsSolver<D>::solveOneEquationPressure(double);                        \
   template void MpsSolver<D>::correctOneEquation(double);
 MISTFALL_INSTANTIATE(2)

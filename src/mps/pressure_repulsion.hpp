@@ -1,0 +1,62 @@
+// The repulsive part of the pressure gradient of numerics.scheme = "stabilised" (numerics.pressure_repulsion = K):
+//   <grad p>_i  +=  -K D0/n0 min(0, min_j [p_j - p_i - <grad p>_i . r_ij]) P_i sum_j r_ij w(|r_ij|) / |r_ij|^2
+// (sums over the neighbours within re of the gradient; <grad p>_i the corrected gradient, corrected_gradient.hpp).
+// It is the minimum-pressure term of Koshizuka & Oka's gradient (gradient.hpp: p_hat - p_i times the first moment of
+// the neighbourhood, which pushes a particle away from the side where its neighbours crowd) with the pressure
+// measured from the linear field of the corrected gradient instead of from p_i. In a linear pressure field (still
+// water, a uniform acceleration) the bracket is zero for every neighbour, so the term vanishes whatever the
+// arrangement of the particles and still water stays the exact equilibrium it is without it; where the pressure
+// has a particle-scale part (the noise of a disordered neighbourhood), it pushes the particles apart as the paper's
+// gradient does. P_i projects the first moment on the free surface's tangent plane, P_i = I - n n^T, for particles
+// within the Laplacian's radius of a free-surface particle (n: the direction of the last step's pressure gradient,
+// normal to the surface, an isobar), as Khayyer, Gotoh & Shimizu (2017, J. Comput. Phys. 332, 236) do with the
+// particle shifting vector: a truncated neighbourhood has a first moment along the normal that is not disorder.
+// Free-surface particles (Dirichlet rows) are not repelled (their tangential order has no pressure to restore it).
+// Why: the corrected gradient is not repulsive, and with it alone a sloshing tank gained 13 times its potential
+// energy in 1.5 s (docs/validation.md).
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "mps/pair_loop.hpp"
+#include "mps/reference_density.hpp"
+
+namespace mistfall {
+
+// The term for particle i. `gradient` is its corrected gradient, `normal` the unit surface normal (zero away from the
+// free surface: no projection), `difference(j, r_ij)` = p_j - p_i as in the gradient, `include(j)` its neighbours.
+template <int D, class Include, class Difference>
+Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+                         const MpsConstants& c, double coefficient, const Vec<D>& gradient, const Vec<D>& normal,
+                         Include&& include, Difference&& difference) {
+  double lowest = 0.0;
+  Vec<D> first = Vec<D>::Zero();
+  forEachPairWithin<D>(i, position, nl, c.re_number_density, include,
+                       [&](std::int32_t j, const Vec<D>& rij, double r2, double w) {
+                         lowest = std::min(lowest, difference(j, rij) - gradient.dot(rij));
+                         first += rij * (w / r2);
+                       });
+  first -= first.dot(normal) * normal;
+  return (-coefficient * double(D) / c.n0 * lowest) * first;
+}
+
+// The normal of pressureRepulsion for each particle: the unit vector of last_gradient[i] where a particle with
+// `surface(j)` lies within re (of the Laplacian) of i, zero elsewhere.
+template <int D, class Surface>
+std::vector<Vec<D>> repulsionNormals(const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+                                     const std::vector<Vec<D>>& last_gradient, Surface&& surface) {
+  const std::int64_t n = static_cast<std::int64_t>(position.size());
+  std::vector<Vec<D>> normal(n, Vec<D>::Zero());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double norm = last_gradient[i].norm();
+    if (norm <= 0.0) continue;
+    bool near = false;
+    forEachPairWithin<D>(i, position, nl, re, surface, [&](std::int32_t, const Vec<D>&, double, double) { near = true; });
+    if (near) normal[i] = last_gradient[i] / norm;
+  }
+  return normal;
+}
+
+}  // namespace mistfall
