@@ -3,58 +3,19 @@
 //    3D, so still water keeps its exact equilibrium;
 //  * with a particle-scale pressure excess it pushes a particle away from the side where its neighbours crowd, with
 //    the magnitude of the formula; near the free surface only along the surface;
-//  * the sloshing tank (cases/sloshing_tank.toml, 1.5 s): the water sloshes with linear theory's period (within 5 %)
-//    and without the kinetic energy growth of the corrected gradient alone (over 0.75-1.5 s its mean kinetic energy is
-//    2.7 times the slosh's energy, against 12.8 without the term).
+// (The sloshing tank it was built for: tests/test_physics_sloshing.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
-#include "mps/neighbor_search.hpp"
 #include "mps/pressure_repulsion.hpp"
-#include "support/lattice.hpp"
-#include "support/run_case.hpp"
+#include "support/shaped_lattice.hpp"
 
 using namespace mistfall;
 
 namespace {
 
-constexpr double kL0 = 0.01;
-
-enum class Shape { Full, CutAbove, Jittered };
-struct Neighbourhood {
-  Shape shape;
-  const char* name;
-};
-const Neighbourhood kShapes[] = {{Shape::Full, "full"}, {Shape::CutAbove, "cut_above"}, {Shape::Jittered, "jittered"}};
-
-// Positions of a lattice of spacing l0 in [-3, 3]^D, the centre (index 0) at the origin; CutAbove drops the points
-// above the centre's row, Jittered moves every point but the centre by up to 0.2 l0. The last axis is vertical.
-template <int D>
-std::vector<Vec<D>> lattice(Shape shape) {
-  std::vector<Vec<D>> x{Vec<D>::Zero()};
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> jitter(-0.2 * kL0, 0.2 * kL0);
-  using Index = Eigen::Matrix<int, D, 1>;
-  const Index lo = Index::Constant(-3), hi = Index::Constant(3);
-  test_support::forEachLatticePoint<D>(lo, hi, [&](const Index& k) {
-    if ((k.array() == 0).all() || (shape == Shape::CutAbove && k[D - 1] > 0)) return;
-    Vec<D> r = kL0 * k.template cast<double>();
-    if (shape == Shape::Jittered)
-      for (int a = 0; a < D; ++a) r[a] += jitter(random);
-    x.push_back(r);
-  });
-  return x;
-}
-
-template <int D>
-NeighborList neighboursOf(const std::vector<Vec<D>>& x, double radius) {
-  NeighborSearch<D> search(Vec<D>::Constant(-0.05), Vec<D>::Constant(0.05), radius);
-  NeighborList nl;
-  search.build(x, std::vector<ParticleKind>(x.size(), ParticleKind::Fluid), nl);
-  return nl;
-}
+using namespace mistfall::test_support;
 
 auto all = [](std::int32_t) { return true; };
 
@@ -70,8 +31,7 @@ void checkLinearFieldGivesNoRepulsion(Shape shape) {
 }
 
 class RepulsionOnLinearFields : public ::testing::TestWithParam<Neighbourhood> {};
-INSTANTIATE_TEST_SUITE_P(Shapes, RepulsionOnLinearFields, ::testing::ValuesIn(kShapes),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Shapes, RepulsionOnLinearFields, ::testing::ValuesIn(kShapes), shapeName);
 
 TEST_P(RepulsionOnLinearFields, IsZero2D) { checkLinearFieldGivesNoRepulsion<2>(GetParam().shape); }
 TEST_P(RepulsionOnLinearFields, IsZero3D) { checkLinearFieldGivesNoRepulsion<3>(GetParam().shape); }
@@ -120,66 +80,5 @@ TEST(PressureRepulsion, NearTheSurfaceActsAlongItOnly) {
   EXPECT_NEAR(along.x(), free.x(), 1e-12 * free.norm());
 }
 
-// The sloshing tank as shipped, and with the corrected gradient alone (pressure_repulsion = 0): the water's centroid
-// every 0.01 s, the kinetic energy at each sample.
-struct Slosh {
-  std::vector<double> periods;  // between up-crossings of the centroid's mean
-  double max_energy = 0.0;      // [J/m]
-  double late_energy = 0.0;     // mean over 0.75-1.5 s [J/m]
-};
-
-Slosh slosh(double repulsion) {
-  CaseConfig config = test_support::loadShippedCase("sloshing_tank.toml");
-  config.numerics.pressure_repulsion = repulsion;
-  const double l0 = config.numerics.particle_spacing, mass = 1000.0 * l0 * l0;
-  std::vector<double> times, centroid;
-  for (int k = 1; k <= 150; ++k) times.push_back(0.01 * k);
-  Slosh result;
-  test_support::runThrough<2>(config, times, [&](double t, const SimulationState<2>& s, const MpsSolver<2>&) {
-    const auto& p = s.particles;
-    double sum = 0.0, energy = 0.0;
-    int count = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.kind[i] != ParticleKind::Fluid) continue;
-      sum += p.position[i].x();
-      energy += 0.5 * mass * p.velocity[i].squaredNorm();
-      ++count;
-    }
-    centroid.push_back(sum / count);
-    result.max_energy = std::max(result.max_energy, energy);
-    if (t > 0.75 - 1e-9) result.late_energy += energy / 76.0;
-  });
-  double mean = 0.0;
-  for (double x : centroid) mean += x / centroid.size();
-  double last = -1.0;
-  for (std::size_t k = 0; k + 1 < centroid.size(); ++k) {
-    const double a = centroid[k] - mean, b = centroid[k + 1] - mean;
-    if (a < 0.0 && b >= 0.0) {
-      const double t = times[k] + 0.01 * (-a) / (b - a);
-      if (last > 0.0) result.periods.push_back(t - last);
-      last = t;
-    }
-  }
-  return result;
-}
-
 }  // namespace
 
-TEST(PhysicsSloshingTank, SloshesAtLinearTheorysPeriodWithoutGainingEnergy) {
-  const double g = 9.81, k = M_PI / 0.1, h = 0.06;
-  const double period = 2.0 * M_PI / std::sqrt(g * k * std::tanh(k * h));  // 0.366 s
-  const double tilt = std::atan2(0.855, 9.773);
-  const double slosh_energy = 1000.0 * g * std::pow(std::tan(tilt), 2) * std::pow(0.1, 3) / 24.0;  // 3.1e-3 J/m
-  const Slosh repelled = slosh(2.0);
-  const Slosh alone = slosh(0.0);
-  for (double t : repelled.periods) std::printf("sloshing tank: period %.3f s (linear theory %.3f)\n", t, period);
-  std::printf("sloshing tank: kinetic energy with the repulsion peak %.4f J/m, mean over 0.75-1.5 s %.4f; without "
-              "%.4f, %.4f (the slosh's energy %.4f)\n",
-              repelled.max_energy, repelled.late_energy, alone.max_energy, alone.late_energy, slosh_energy);
-  // Measured: periods 0.369-0.382 s; mean kinetic energy over the second half 2.7 slosh energies (the slosh alone
-  // would hold half of one: the rest is particle-scale motion), without the term 12.8 (peaks 8 and 34).
-  ASSERT_GE(repelled.periods.size(), 3u);
-  for (double t : repelled.periods) EXPECT_NEAR(t, period, 0.05 * period);
-  EXPECT_LT(repelled.late_energy, 4.0 * slosh_energy);
-  EXPECT_GT(alone.late_energy, 2.0 * repelled.late_energy);
-}

@@ -8,9 +8,7 @@
 // arrangement of the particles and still water stays the exact equilibrium it is without it; where the pressure
 // has a particle-scale part (the noise of a disordered neighbourhood), it pushes the particles apart as the paper's
 // gradient does. P_i projects the first moment on the free surface's tangent plane, P_i = I - n n^T, for particles
-// within the Laplacian's radius of a free-surface particle (n: the direction of the last step's pressure gradient,
-// normal to the surface, an isobar), as Khayyer, Gotoh & Shimizu (2017, J. Comput. Phys. 332, 236) do with the
-// particle shifting vector: a truncated neighbourhood has a first moment along the normal that is not disorder.
+// near a free surface (surface_tangent.hpp).
 // Free-surface particles (Dirichlet rows) are not repelled (their tangential order has no pressure to restore it).
 // Why: the corrected gradient is not repulsive, and with it alone a sloshing tank gained 13 times its potential
 // energy in 1.5 s (docs/validation.md).
@@ -25,7 +23,8 @@
 namespace mistfall {
 
 // The term for particle i. `gradient` is its corrected gradient, `normal` the unit surface normal (zero away from the
-// free surface: no projection), `difference(j, r_ij)` = p_j - p_i as in the gradient, `include(j)` its neighbours.
+// free surface: no projection; surface_tangent.hpp), `difference(j, r_ij)` = p_j - p_i as in the gradient,
+// `include(j)` its neighbours.
 template <int D, class Include, class Difference>
 Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
                          const MpsConstants& c, double coefficient, const Vec<D>& gradient, const Vec<D>& normal,
@@ -39,24 +38,6 @@ Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, con
                        });
   first -= first.dot(normal) * normal;
   return (-coefficient * double(D) / c.n0 * lowest) * first;
-}
-
-// The normal of pressureRepulsion for each particle: the unit vector of last_gradient[i] where a particle with
-// `surface(j)` lies within re (of the Laplacian) of i, zero elsewhere.
-template <int D, class Surface>
-std::vector<Vec<D>> repulsionNormals(const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
-                                     const std::vector<Vec<D>>& last_gradient, Surface&& surface) {
-  const std::int64_t n = static_cast<std::int64_t>(position.size());
-  std::vector<Vec<D>> normal(n, Vec<D>::Zero());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double norm = last_gradient[i].norm();
-    if (norm <= 0.0) continue;
-    bool near = false;
-    forEachPairWithin<D>(i, position, nl, re, surface, [&](std::int32_t, const Vec<D>&, double, double) { near = true; });
-    if (near) normal[i] = last_gradient[i] / norm;
-  }
-  return normal;
 }
 
 }  // namespace mistfall

@@ -174,6 +174,10 @@ const StepReport& MpsSolver<D>::step(double until) {
     else
       correctLiquid(dt);
   }
+  if (config_.numerics.scheme == Scheme::Stabilised) {  // particle_shifting.hpp
+    auto t = timer_.scope(Stage::Shifting);
+    shiftParticles(dt);
+  }
   if (roles_.enclosed_count > 0) {
     auto t = timer_.scope(Stage::BubbleGas);
     moveBubbleGas(dt);

@@ -32,6 +32,7 @@
 #include "mps/reference_density.hpp"
 #include "mps/simulation_state.hpp"
 #include "mps/stage_timer.hpp"
+#include "mps/surface_tangent.hpp"
 
 namespace mistfall {
 
@@ -122,6 +123,8 @@ class MpsSolver {
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
   void makeThinRowsFreeSurface();
+  void findSurfaceTangents(const std::vector<Vec<D>>& last_gradient);
+  void shiftParticles(double dt);
   // with `repulsive`, plus numerics.pressure_repulsion's term (pressure_repulsion.hpp): the correction's gradient
   CorrectedGradient<D> stabilisedGradient(std::size_t i, bool repulsive = false) const;
   // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
@@ -158,7 +161,7 @@ class MpsSolver {
   CouplingRoles roles_;
   PressureProblem problem_;
   std::vector<double> surface_pressure_;     // stabilised: Dirichlet values of free-surface particles (empty: 0)
-  std::vector<Vec<D>> repulsion_normal_;     // stabilised: surface normals of pressureRepulsion (zero: interior)
+  SurfaceTangents<D> surface_tangents_;      // stabilised: near the free surface, its normal (surface_tangent.hpp)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
   PressureSystem system_;

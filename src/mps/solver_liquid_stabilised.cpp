@@ -6,10 +6,12 @@
 //  * the first-order consistent Laplacian (laplacian_consistency.hpp) and the free-surface particles' pressure half
 //    a spacing inside the surface (surface_pressure.hpp), both from the last step's corrected gradient;
 //  * the corrected gradient (corrected_gradient.hpp, Khayyer & Gotoh 2011) in the correction;
-//  * the repulsive term of numerics.pressure_repulsion in the correction (pressure_repulsion.hpp);
+//  * the repulsive term of numerics.pressure_repulsion in the correction (pressure_repulsion.hpp), and the particle
+//    shifting of numerics.particle_shifting after it (particle_shifting.hpp), both along the surface near it;
 //  * rows whose liquid-side support is below numerics.liquid_support_fraction of n0 are free surface (counted).
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
+#include "mps/particle_shifting.hpp"
 #include "mps/pressure_repulsion.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
@@ -33,7 +35,7 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repuls
   const double k = config_.numerics.pressure_repulsion;
   if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
     gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
-                                           repulsion_normal_[i], carries, difference);
+                                           surface_tangents_.normal[i], carries, difference);
   return gradient;
 }
 
@@ -79,11 +81,7 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
     if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid)
       surface_pressure_[i] = surfaceParticlePressure<D>(last_gradient[i], constants_.l0);
   }
-  auto freeSurface = [&](std::int32_t j) {
-    return p.kind[j] == ParticleKind::Fluid && problem_.takes_part[j] && !problem_.unknown[j];
-  };
-  if (config_.numerics.pressure_repulsion > 0.0)
-    repulsion_normal_ = repulsionNormals<D>(p.position, neighbours_, constants_.re_laplacian, last_gradient, freeSurface);
+  findSurfaceTangents(last_gradient);
   problem_.extra_rhs.assign(n, 0.0);
   const double factor = constants_.laplacianFactor();
   auto inLaplacian = [&](std::int32_t j) { return problem_.takes_part[j] || isMirroredWall(p.kind[j]); };
@@ -100,10 +98,50 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
   }
 }
 
+// The particles near a free surface (fluid taking part without an unknown) and its normal, for the repulsion and the
+// shifting (when either is on), once the unknowns are chosen.
+template <int D>
+void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>& last_gradient) {
+  if (config_.numerics.pressure_repulsion <= 0.0 && config_.numerics.particle_shifting <= 0.0) return;
+  const auto& p = state_.particles;
+  auto freeSurface = [&](std::int32_t j) {
+    return p.kind[j] == ParticleKind::Fluid && problem_.takes_part[j] && !problem_.unknown[j];
+  };
+  surface_tangents_ = surfaceTangents<D>(p.position, neighbours_, constants_.re_laplacian, last_gradient, freeSurface);
+}
+
+// Particle shifting (particle_shifting.hpp) of the fluid particles the correction moved: the liquid system's
+// (walls in the sum), or every fluid particle of the one equation (both phases, walls in the sum). Jacobi-style: all
+// displacements from the positions before the stage.
+template <int D>
+void MpsSolver<D>::shiftParticles(double dt) {
+  auto& p = state_.particles;
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  const double a = config_.numerics.particle_shifting;
+  if (a <= 0.0 || surface_tangents_.empty()) return;
+  const bool one = oneEquation();
+  auto inSum = [&](std::int32_t j) {
+    return one ? (problem_.takes_part[j] || isMirroredWall(p.kind[j])) : roles_.in_liquid_system[j] != 0;
+  };
+  std::vector<Vec<D>> shift(n, Vec<D>::Zero());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (!one && (!roles_.in_liquid_system[i] || roles_.enclosed_gas[i])) continue;
+    const Vec<D>& normal = surface_tangents_.normal[i];
+    if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
+    shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) p.position[i] += shift[i];
+}
+
 #define MISTFALL_INSTANTIATE(D)                                                         \
   template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t, bool) const; \
   template void MpsSolver<D>::stabilisedPressureTerms(double);                       \
-  template void MpsSolver<D>::makeThinRowsFreeSurface();
+  template void MpsSolver<D>::makeThinRowsFreeSurface();                            \
+  template void MpsSolver<D>::shiftParticles(double);                              \
+  template void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>&);
 MISTFALL_INSTANTIATE(2)
 MISTFALL_INSTANTIATE(3)
 #undef MISTFALL_INSTANTIATE

@@ -37,7 +37,7 @@ CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i, bool repul
   const double k = config_.numerics.pressure_repulsion;
   if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
     gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
-                                           repulsion_normal_[i], carries, difference);
+                                           surface_tangents_.normal[i], carries, difference);
   return gradient;
 }
 
@@ -87,9 +87,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     if (!problem_.unknown[i])
       surface_pressure_[i] = problem_.density_of[i] * surfaceParticlePressure<D>(last[i], constants_.l0);
   }
-  auto freeSurface = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && !problem_.unknown[j]; };
-  if (config_.numerics.pressure_repulsion > 0.0)
-    repulsion_normal_ = repulsionNormals<D>(p.position, neighbours_, constants_.re_laplacian, last, freeSurface);
+  findSurfaceTangents(last);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   problem_.extra_rhs.assign(n, 0.0);
   const double factor = constants_.laplacianFactor();

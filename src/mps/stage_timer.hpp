@@ -23,6 +23,7 @@ enum class Stage : int {
   LiquidSetup,      // the liquid solve's preconditioner setup (AMG hierarchy, incomplete Cholesky)
   LiquidSolve,      // the liquid solve's iterations
   LiquidCorrection, // wall and dummy pressures, -dt/rho grad p
+  Shifting,         // particle shifting (stabilised scheme, particle_shifting.hpp)
   BubbleGas,        // the bubbles' gas carried by the liquid
   GasAssembly,      // the gas system's n*, rows and matrix
   GasSetup,         // the gas solve's preconditioner setup
@@ -38,7 +39,7 @@ inline const char* stageName(Stage s) {
   static constexpr const char* names[] = {
       "neighbour search", "gas regions/bubbles", "time step",      "predict (visc+grav)", "collision",
       "open boundaries",  "number density",      "liquid: assembly", "liquid: AMG setup", "liquid: AMG solve",
-      "liquid: correction", "bubble gas motion", "gas: assembly",  "gas: AMG setup",      "gas: AMG solve",
+      "liquid: correction", "shifting",          "bubble gas motion", "gas: assembly",  "gas: AMG setup",      "gas: AMG solve",
       "gas: correction",  "health check",        "output",         "texture"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<int>(Stage::Count));
   return names[static_cast<int>(s)];
