@@ -108,7 +108,7 @@ struct NumericsConfig {
   double pressure_repulsion = 2.0;
   // A of the particle shifting after the correction (particle_shifting.hpp), delta r = -A l0 |u| dt P grad C: zero at
   // rest; 0 = none
-  double particle_shifting = 2.0;
+  double particle_shifting = 3.0;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|
