@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "mps/corrected_gradient.hpp"
 #include "mps/pair_loop.hpp"
 #include "mps/reference_density.hpp"
 
@@ -38,6 +39,19 @@ Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, con
                        });
   first -= first.dot(normal) * normal;
   return (-coefficient * double(D) / c.n0 * lowest) * first;
+}
+
+// The stabilised scheme's gradient (corrected_gradient.hpp) plus, with `repel` and where it did not fall back, the
+// term above with coefficient `k`: what the liquid's and the one equation's corrections apply.
+template <int D, class Include, class Difference>
+CorrectedGradient<D> repulsiveCorrectedGradient(std::size_t i, const std::vector<Vec<D>>& position,
+                                                const NeighborList& nl, const MpsConstants& c, double min_determinant,
+                                                bool repel, double k, const Vec<D>& normal, Include&& include,
+                                                Difference&& difference) {
+  auto gradient = correctedGradientAt<D>(i, position, nl, c, min_determinant, include, difference);
+  if (repel && k > 0.0 && !gradient.fell_back)
+    gradient.value += pressureRepulsion<D>(i, position, nl, c, k, gradient.value, normal, include, difference);
+  return gradient;
 }
 
 }  // namespace mistfall

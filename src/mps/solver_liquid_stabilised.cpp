@@ -30,13 +30,11 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repuls
   auto difference = [&](std::int32_t j, const Vec<D>& rij) {
     return isMirroredWall(p.kind[j]) ? rho * gravity_.dot(rij) : p.pressure[j] - p.pressure[i];
   };
-  auto gradient = correctedGradientAt<D>(i, p.position, neighbours_, constants_,
-                                         config_.numerics.gradient_correction_min_determinant, carries, difference);
-  const double k = config_.numerics.pressure_repulsion;
-  if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
-    gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
-                                           surface_tangents_.normal[i], carries, difference);
-  return gradient;
+  const auto& n = config_.numerics;
+  const Vec<D> normal = surface_tangents_.empty() ? Vec<D>::Zero() : surface_tangents_.normal[i];
+  return repulsiveCorrectedGradient<D>(i, p.position, neighbours_, constants_, n.gradient_correction_min_determinant,
+                                       repulsive && problem_.unknown[i], n.pressure_repulsion, normal, carries,
+                                       difference);
 }
 
 // After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every

@@ -32,13 +32,11 @@ CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i, bool repul
     if (isMirroredWall(p.kind[j])) return gravity_.dot(rij);
     return (p.pressure[j] - p.pressure[i]) / pairDensity(rho[i], rho[j], phi[i], phi[j]);
   };
-  auto gradient = correctedGradientAt<D>(i, p.position, neighbours_, constants_,
-                                         config_.numerics.gradient_correction_min_determinant, carries, difference);
-  const double k = config_.numerics.pressure_repulsion;
-  if (repulsive && k > 0.0 && !gradient.fell_back && problem_.unknown[i])
-    gradient.value += pressureRepulsion<D>(i, p.position, neighbours_, constants_, k, gradient.value,
-                                           surface_tangents_.normal[i], carries, difference);
-  return gradient;
+  const auto& n = config_.numerics;
+  const Vec<D> normal = surface_tangents_.empty() ? Vec<D>::Zero() : surface_tangents_.normal[i];
+  return repulsiveCorrectedGradient<D>(i, p.position, neighbours_, constants_, n.gradient_correction_min_determinant,
+                                       repulsive && problem_.unknown[i], n.pressure_repulsion, normal, carries,
+                                       difference);
 }
 
 template <int D>
