@@ -2,8 +2,9 @@
 # The free overfall's grid series (issue 16, item 3; docs/waterfall.md, "The brink depth against resolution"):
 # cases/waterfall.toml without its air region (water alone), run 0-3 s at l0 = 10, 7 and 5 mm (dt_max scaled with
 # l0), and the brink depth and nappe of tools/overfall_profile.py over 1-3 s against Rouse's 0.715 h_c.
-# Measured 2026-11-25: 0.891, 0.865 and 0.807 h_c.
-# Usage: tools/validate_overfall.sh [BUILD_DIR] [OUT_DIR]   (part of `make validate`; about 10 min on 2 cores)
+# Measured 2026-11-25: 0.891, 0.865 and 0.807 h_c; at 2.5 mm 0.793 (OVERFALL_SPACINGS=2.5, 50 min on 1 thread).
+# Usage: [OVERFALL_SPACINGS="10 7 5"] tools/validate_overfall.sh [BUILD_DIR] [OUT_DIR]
+#        (part of `make validate` with the default spacings in mm; about 10 min on 2 cores)
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/validate/overfall}
@@ -16,11 +17,11 @@ case_for() {
   local mm=$1
   /usr/bin/python3 - "$here/cases/waterfall.toml" "$mm" <<'PY'
 import re, sys
-text, mm = open(sys.argv[1]).read(), int(sys.argv[2])
+text, mm = open(sys.argv[1]).read(), float(sys.argv[2])
 blocks = text.split("[[region]]")
 blocks = [b for b in blocks if 'material = "gas"' not in b]       # the air region goes; the rest stays
 text = "[[region]]".join(blocks)
-text = re.sub(r'^name = "waterfall"', f'name = "overfall_{mm}mm"', text, flags=re.M)
+text = re.sub(r'^name = "waterfall"', f'name = "overfall_{mm:g}mm"'.replace(".", "p"), text, flags=re.M)
 text = re.sub(r"^particle_spacing = .*", f"particle_spacing = {mm / 1000:g}", text, flags=re.M)
 text = re.sub(r"^dt_max = .*", f"dt_max = {mm * 5e-5:g}", text, flags=re.M)
 text = re.sub(r"^field_spacing = .*", f"field_spacing = {2 * mm / 1000:g}", text, flags=re.M)
@@ -29,7 +30,7 @@ sys.stdout.write(text)
 PY
 }
 
-for mm in 10 7 5; do
+for mm in ${OVERFALL_SPACINGS:-10 7 5}; do
   name="water_${mm}mm"
   case_for "$mm" >"$out/$name.toml"
   rm -rf "${out:?}/$name"
