@@ -33,10 +33,11 @@ CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i, bool repul
     return (p.pressure[j] - p.pressure[i]) / pairDensity(rho[i], rho[j], phi[i], phi[j]);
   };
   const auto& n = config_.numerics;
-  const Vec<D> normal = surface_tangents_.empty() ? Vec<D>::Zero() : surface_tangents_.normal[i];
+  // the tangents are this step's once the unknowns are chosen: read only by the correction (`repulsive`)
+  const bool repel = repulsive && problem_.unknown[i] && !surface_tangents_.empty();
+  const Vec<D> normal = repel ? surface_tangents_.normal[i] : Vec<D>::Zero();
   return repulsiveCorrectedGradient<D>(i, p.position, neighbours_, constants_, n.gradient_correction_min_determinant,
-                                       repulsive && problem_.unknown[i], n.pressure_repulsion, normal, carries,
-                                       difference);
+                                       repel, n.pressure_repulsion, normal, carries, difference);
 }
 
 template <int D>

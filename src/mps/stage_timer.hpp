@@ -37,10 +37,10 @@ enum class Stage : int {
 
 inline const char* stageName(Stage s) {
   static constexpr const char* names[] = {
-      "neighbour search", "gas regions/bubbles", "time step",      "predict (visc+grav)", "collision",
-      "open boundaries",  "number density",      "liquid: assembly", "liquid: AMG setup", "liquid: AMG solve",
-      "liquid: correction", "shifting",          "bubble gas motion", "gas: assembly",  "gas: AMG setup",      "gas: AMG solve",
-      "gas: correction",  "health check",        "output",         "texture"};
+      "neighbour search",   "gas regions/bubbles", "time step",         "predict (visc+grav)", "collision",
+      "open boundaries",    "number density",      "liquid: assembly",  "liquid: AMG setup",   "liquid: AMG solve",
+      "liquid: correction", "shifting",            "bubble gas motion", "gas: assembly",       "gas: AMG setup",
+      "gas: AMG solve",     "gas: correction",     "health check",      "output",              "texture"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<int>(Stage::Count));
   return names[static_cast<int>(s)];
 }
