@@ -32,6 +32,7 @@
 #include "mps/reference_density.hpp"
 #include "mps/simulation_state.hpp"
 #include "mps/stage_timer.hpp"
+#include "mps/pressure_repulsion.hpp"
 #include "mps/surface_tangent.hpp"
 
 namespace mistfall {
@@ -127,6 +128,17 @@ class MpsSolver {
   void shiftParticles(double dt);
   // with `repulsive`, plus numerics.pressure_repulsion's term (pressure_repulsion.hpp): the correction's gradient
   CorrectedGradient<D> stabilisedGradient(std::size_t i, bool repulsive = false) const;
+  // The corrected gradient of `difference` over `include` at i, plus the repulsion with `repulsive` on a row with an
+  // unknown (the surface tangents are this step's once the unknowns are chosen: only the correction reads them).
+  template <class Include, class Difference>
+  CorrectedGradient<D> gradientWithRepulsion(std::size_t i, bool repulsive, Include&& include,
+                                             Difference&& difference) const {
+    const bool repel = repulsive && problem_.unknown[i] && !surface_tangents_.empty();
+    return repulsiveCorrectedGradient<D>(i, state_.particles.position, neighbours_, constants_,
+                                         config_.numerics.gradient_correction_min_determinant, repel,
+                                         config_.numerics.pressure_repulsion,
+                                         repel ? surface_tangents_.normal[i] : Vec<D>::Zero(), include, difference);
+  }
   // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
   bool oneEquation() const { return config_.numerics.coupling == NumericsConfig::Coupling::OneEquation; }
   void solveOneEquationPressure(double dt);

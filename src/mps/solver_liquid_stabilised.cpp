@@ -12,7 +12,6 @@
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
 #include "mps/particle_shifting.hpp"
-#include "mps/pressure_repulsion.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -30,12 +29,7 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repuls
   auto difference = [&](std::int32_t j, const Vec<D>& rij) {
     return isMirroredWall(p.kind[j]) ? rho * gravity_.dot(rij) : p.pressure[j] - p.pressure[i];
   };
-  const auto& n = config_.numerics;
-  // the tangents are this step's once the unknowns are chosen: read only by the correction (`repulsive`)
-  const bool repel = repulsive && problem_.unknown[i] && !surface_tangents_.empty();
-  const Vec<D> normal = repel ? surface_tangents_.normal[i] : Vec<D>::Zero();
-  return repulsiveCorrectedGradient<D>(i, p.position, neighbours_, constants_, n.gradient_correction_min_determinant,
-                                       repel, n.pressure_repulsion, normal, carries, difference);
+  return gradientWithRepulsion(i, repulsive, carries, difference);
 }
 
 // After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every

@@ -14,7 +14,6 @@
 #include "mps/interface_density.hpp"
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
-#include "mps/pressure_repulsion.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -32,12 +31,7 @@ CorrectedGradient<D> MpsSolver<D>::oneEquationGradient(std::size_t i, bool repul
     if (isMirroredWall(p.kind[j])) return gravity_.dot(rij);
     return (p.pressure[j] - p.pressure[i]) / pairDensity(rho[i], rho[j], phi[i], phi[j]);
   };
-  const auto& n = config_.numerics;
-  // the tangents are this step's once the unknowns are chosen: read only by the correction (`repulsive`)
-  const bool repel = repulsive && problem_.unknown[i] && !surface_tangents_.empty();
-  const Vec<D> normal = repel ? surface_tangents_.normal[i] : Vec<D>::Zero();
-  return repulsiveCorrectedGradient<D>(i, p.position, neighbours_, constants_, n.gradient_correction_min_determinant,
-                                       repel, n.pressure_repulsion, normal, carries, difference);
+  return gradientWithRepulsion(i, repulsive, carries, difference);
 }
 
 template <int D>
