@@ -161,7 +161,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
-      "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped",
+      "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -177,7 +177,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.liquid_volume = 0.04003125; r.gas_volume = 0.5; r.gas_compression = -1.25e-3; r.gas_pressure = -173.5;
   r.dispersed_gas = 11; r.entrained_swaps = 12; r.regularised_rows = 13;
   r.gas_set_dt = 14; r.liquid_dt_steps = 15.25; r.entrained_gas = 16;
-  r.gas_correction_capped = 17; r.gas_speed_capped = 18;
+  r.gas_correction_capped = 17; r.gas_speed_capped = 18; r.largest_shift = 0.03125;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -203,6 +203,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(31, rows[0].gas_capped);
   EXPECT_EQ(17, rows[0].gas_correction_capped);
   EXPECT_EQ(18, rows[0].gas_speed_capped);
+  EXPECT_EQ(0.03125, rows[0].largest_shift);
   EXPECT_EQ(7, rows[0].collisions);
   EXPECT_EQ(8, rows[0].gradient_fallbacks);
   EXPECT_EQ(9, rows[0].thin_support);

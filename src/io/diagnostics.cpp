@@ -97,6 +97,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::entrained_gas>("entrained_gas"),
     column<&DiagnosticsRow::gas_correction_capped>("gas_correction_capped"),
     column<&DiagnosticsRow::gas_speed_capped>("gas_speed_capped"),
+    column<&DiagnosticsRow::largest_shift, 6>("largest_shift"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -59,6 +59,9 @@ struct DiagnosticsRow {
   // gas_capped split by guard (particle-steps): cut by numerics.gas_correction_limit, by gas_speed_limit (a
   // correction cut by both counts in both).
   std::int64_t gas_correction_capped = 0, gas_speed_capped = 0;
+  // The largest particle shift of a step since the previous row, in l0 (numerics.particle_shifting, stabilised
+  // scheme; 0 at rest: it scales with the particle's speed).
+  double largest_shift = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

@@ -77,6 +77,7 @@ struct StepReport {
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
+  double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
 };
 
 template <int D>

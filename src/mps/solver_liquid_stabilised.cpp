@@ -1,3 +1,4 @@
+#include <algorithm>
 // numerics.scheme = "stabilised": the parts of the liquid's pressure stage that differ from the paper's MPS
 // (docs/validation.md). Still water is an exact equilibrium of the discrete equations (hydrostatic pressure, zero
 // velocity, whatever the arrangement of the particles), which the paper's scheme is not:
@@ -125,8 +126,13 @@ void MpsSolver<D>::shiftParticles(double dt) {
     if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
     shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum);
   }
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) p.position[i] += shift[i];
+  double largest = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : largest)
+  for (std::int64_t i = 0; i < n; ++i) {
+    p.position[i] += shift[i];
+    largest = std::max(largest, shift[i].norm());
+  }
+  report_.largest_shift = largest / constants_.l0;
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                         \
