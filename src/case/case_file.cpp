@@ -136,8 +136,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const std::string np = "numerics";
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
-               {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant", "pressure_repulsion", "particle_shifting",
-                "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
+               {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
+                "pressure_repulsion", "particle_shifting", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
