@@ -84,6 +84,21 @@ def frames_between(run_dir, t_from, t_to):
     return chosen
 
 
+def block_standard_error(times, values, block):
+    """Standard error of the mean of `values` (one per frame at `times`) from the means of consecutive blocks of
+    `block` seconds: std(block means, ddof 1) / sqrt(blocks). Neighbouring frames of a run are correlated (the brink
+    oscillates over a few tenths of a second), so the spread of single frames over sqrt(frames) would understate it.
+    Returns (error, blocks); error is nan below 2 blocks."""
+    first = times[0]
+    groups = {}
+    for t, v in zip(times, values):
+        groups.setdefault(int(np.floor((t - first) / block + 1e-9)), []).append(v)
+    means = np.array([np.mean(g) for g in groups.values()])
+    if len(means) < 2:
+        return float("nan"), len(means)
+    return float(np.std(means, ddof=1) / np.sqrt(len(means))), len(means)
+
+
 def main():
     ap = Parser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir")
@@ -93,6 +108,8 @@ def main():
     ap.add_argument("--pool-y", type=float, default=None, help="pool level (m; default: the crest of region 'weir')")
     ap.add_argument("--sheet-bottom", type=float, default=None,
                     help="lowest level of the sheet measured (m; default: pool level + 0.35 x drop)")
+    ap.add_argument("--block", type=float, default=0.5,
+                    help="length of the blocks whose means give the brink depth's standard error (s; default 0.5)")
     args = ap.parse_args()
     try:
         run(args)
@@ -109,6 +126,8 @@ def run(args):
     if not pool_y < bottom < y_bed - l0:
         raise PlotError(f"--sheet-bottom {bottom} must lie between the pool level {pool_y} and the bed {y_bed} less l0")
     levels = np.arange(y_bed - l0, bottom - 1e-9, -l0)
+    if not args.block > 0.0:
+        raise PlotError(f"--block must be > 0 s, got {args.block}")
     depth, edge_depth, u_mean, v_mean = [], [], [], []
     slab_x = [[] for _ in levels]
     for _, path in chosen:
@@ -129,6 +148,7 @@ def run(args):
         raise PlotError("no water at the brink in the frames chosen")
     h_b, u_b, v_b = float(np.mean(depth)), float(np.mean(u_mean)), float(np.mean(v_mean))
     h_c = (q * q / g) ** (1.0 / 3.0)
+    error, blocks = block_standard_error([t for t, _ in chosen], depth, args.block)
     h_rouse = ROUSE_BRINK_RATIO * h_c
 
     def ballistic_x(y0, u, v, level):  # the later root of y0 + v t - g t^2 / 2 = level
@@ -174,6 +194,11 @@ def run(args):
           f"{100 * np.mean(edge_depth):.2f} cm = {np.mean(edge_depth) / h_c:.3f} h_c")
     print(f"critical depth  (q^2/g)^(1/3) = {100 * h_c:.2f} cm; measured/critical = {h_b / h_c:.3f} "
           f"(Rouse: {ROUSE_BRINK_RATIO})")
+    if blocks >= 2:
+        print(f"standard error  of measured/critical +- {error / h_c:.3f} ({blocks} blocks of {args.block:g} s: the "
+              f"frames of a block are correlated, their means nearly not)")
+    else:
+        print(f"standard error  none: the frames span fewer than 2 blocks of {args.block:g} s (--block)")
     print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
     print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")

@@ -36,5 +36,5 @@ for mm in ${OVERFALL_SPACINGS:-10 7 5}; do
   rm -rf "${out:?}/$name"
   "$build/mistfall" simulate "$out/$name.toml" --out "$out/$name" --plain-progress 2>"$out/$name.log" || true
   echo "== $name: $(tail -n 1 "$out/$name.log")"
-  /usr/bin/python3 "$here/tools/overfall_profile.py" "$out/$name" --from 1 --to 3 | grep -E "measured/critical|nappe" || true
+  /usr/bin/python3 "$here/tools/overfall_profile.py" "$out/$name" --from 1 --to 3 | grep -E "measured/critical|standard error|nappe" || true
 done

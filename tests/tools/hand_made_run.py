@@ -10,11 +10,16 @@ def _array(name, typ, comps, values):
 
 def write_frames(run, times, points, velocities):
     """Writes one frame per time into run/frames and run/frames.pvd. points: [(x, y, kind, phase)];
-    velocities: [(u, v)] of the same length, the same in every frame."""
+    velocities: [(u, v)] of the same length, the same in every frame. Or, for frames that differ, points and
+    velocities are lists of such lists, one per time."""
     os.makedirs(os.path.join(run, "frames"), exist_ok=True)
-    n = len(points)
+    per_frame = isinstance(points[0], list)
+    all_points, all_velocities = points, velocities
     datasets = ""
     for k, t in enumerate(times):
+        points = all_points[k] if per_frame else all_points
+        velocities = all_velocities[k] if per_frame else all_velocities
+        n = len(points)
         body = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">\n'
                 '<PolyData>\n<FieldData>' + _array("TIME", "Float64", 1, [t]) + '</FieldData>\n'
                 f'<Piece NumberOfPoints="{n}" NumberOfVerts="0">\n<Points>'

@@ -85,6 +85,40 @@ PY
 test -s "$run/plots/overfall.png"
 test -s "$run/plots/overfall.csv"
 
+# The standard error of the brink depth from block means: four frames 0.5 s apart, the channel 2, 3, 2 and 3 rows
+# deep at the brink: mean 2.5 cm, block means 2, 3, 2, 3 cm, standard error std(ddof 1) / sqrt(4) = 0.2887 cm =
+# 0.0973 h_c; with blocks of 1 s (two frames each) the block means are equal and the error is 0.
+blocks="$work/blocks"
+mkdir -p "$blocks" && cp "$run/case.toml" "$blocks/case.toml"
+"$py" - "$blocks" "$source_dir" <<'PY'
+import os, sys
+sys.path.insert(0, os.path.join(sys.argv[2], "tests", "tools"))
+from hand_made_run import write_frames
+frames = []
+for rows in (2, 3, 2, 3):
+    pts = [(0.205 + i * 0.01, 0.435 + j * 0.01, 0, 0) for i in range(10) for j in range(rows)]
+    pts += [(0.33, 0.30, 0, 0)]            # one particle of sheet, below the brink
+    frames.append(pts)
+write_frames(sys.argv[1], [0.5, 1.0, 1.5, 2.0], frames, [[(0.7, -0.1)] * len(p) for p in frames])
+PY
+out=$("$py" "$tool" "$blocks" --from 0.5)
+echo "$out"
+"$py" - "$out" <<'PY'
+import re, sys
+out = sys.argv[1]
+ratio = float(re.search(r"measured/critical = ([0-9.]+)", out).group(1))
+error = float(re.search(r"standard error\s+of measured/critical \+- ([0-9.]+) \((\d+) blocks", out).group(1))
+blocks = int(re.search(r"\+- [0-9.]+ \((\d+) blocks", out).group(1))
+assert abs(ratio - 2.5 / 2.967) < 0.002, ratio
+assert blocks == 4 and abs(error - 0.0973) < 0.001, (error, blocks)
+PY
+out=$("$py" "$tool" "$blocks" --from 0.5 --block 1.0)
+echo "$out" | grep -q "+- 0.000 (2 blocks of 1 s" || { echo "1 s blocks: $out"; exit 1; }
+out=$("$py" "$tool" "$blocks" --from 0.5 --to 0.5)
+echo "$out" | grep -q "standard error  none" || { echo "one frame: $out"; exit 1; }
+if "$py" "$tool" "$blocks" --block 0 2>"$work/err"; then echo "--block 0 accepted"; exit 1; fi
+grep -q "block must be > 0" "$work/err"
+
 # Bad input: a missing run, a run without a brink region.
 if "$py" "$tool" "$work/missing" 2>"$work/err"; then echo "missing run accepted"; exit 1; fi
 grep -q "overfall_profile:" "$work/err"
