@@ -19,7 +19,14 @@ of the sheet) is --pool-y, by default the crest of the region named weir; the sh
 --sheet-bottom, by default the pool level plus 35 % of the drop from the bed (above the splash).
 Writes RUN_DIR/plots/overfall.png (the sheet of the last frame used, the measured and ballistic paths) and
 RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse), and
-prints a summary. Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
+prints a summary.
+Channel energy: in bins of --energy-bin metres from the inflow's gate (the downstream edge of region 'gate', else
+of the first [[inflow]] box) to the brink, the water's depth h (as at the brink: particles above the bed less l0/2,
+times l0^2, over the bin's length), its mean velocity U and the specific energy E = h + U^2 / (2 g) against the
+critical energy 1.5 h_c. Upstream of a free overfall the flow of a frictionless horizontal channel carries E = 1.5
+h_c (its critical section lies a few h_c before the brink, Chow 1959); E above that, falling along the channel, is
+head lost to friction, which for water over 0.3 m at Re ~ 10^4 is about 0.02 h_c.
+Exit codes: 0 done; 1 bad input, with a one-line message on stderr.
 Needs Debian's python3-numpy and python3-matplotlib (`make deps`); run it with /usr/bin/python3.
 """
 import os
@@ -62,7 +69,34 @@ def read_overfall_case(run_dir, bed_region, pool_y):
     if pool_y is None:
         _, weir_max = region_box(doc, "weir")
         pool_y = float(weir_max[1])
-    return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y
+    try:
+        _, gate_max = region_box(doc, "gate")
+        channel_start = float(gate_max[0])
+    except PlotError:
+        inflows = doc.get("inflow", [])
+        channel_start = float(inflows[0]["max"][0]) if inflows and "max" in inflows[0] else float("nan")
+    return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y, channel_start
+
+
+def channel_energy(frames, l0, g, q, start, x_brink, y_bed, length):
+    """[(x_mid, h, U, E)] averaged over `frames` (lists of liquid x, y, u) in bins of `length` from start to x_brink:
+    h the water above y_bed less l0/2 (particles times l0^2 over the bin), U their mean x-velocity,
+    E = h + U^2/(2g). Empty where start is unknown or the bins do not fit."""
+    if not np.isfinite(start) or not 0.0 < length <= x_brink - start:
+        return []
+    edges = np.arange(start, x_brink + 1e-9, length)
+    rows = []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        h, u = [], []
+        for x, y, ux in frames:
+            inside = (x >= lo) & (x < hi) & (y > y_bed - 0.5 * l0)
+            if inside.any():
+                h.append(inside.sum() * l0 * l0 / (hi - lo))
+                u.append(ux[inside].mean())
+        if h:
+            depth, speed = float(np.mean(h)), float(np.mean(u))
+            rows.append((0.5 * (lo + hi), depth, speed, depth + speed * speed / (2.0 * g)))
+    return rows
 
 
 def add_window_arguments(ap):
@@ -108,6 +142,8 @@ def main():
     ap.add_argument("--pool-y", type=float, default=None, help="pool level (m; default: the crest of region 'weir')")
     ap.add_argument("--sheet-bottom", type=float, default=None,
                     help="lowest level of the sheet measured (m; default: pool level + 0.35 x drop)")
+    ap.add_argument("--energy-bin", type=float, default=0.04,
+                    help="length of the channel bins of the specific-energy table (m; default 0.04)")
     ap.add_argument("--block", type=float, default=0.5,
                     help="length of the blocks whose means give the brink depth's standard error (s; default 0.5)")
     args = ap.parse_args()
@@ -119,7 +155,7 @@ def main():
 
 
 def run(args):
-    l0, g, q, x_brink, y_bed, pool_y = read_overfall_case(args.run_dir, args.bed_region, args.pool_y)
+    l0, g, q, x_brink, y_bed, pool_y, channel_start = read_overfall_case(args.run_dir, args.bed_region, args.pool_y)
     window = args.window or 2.0 * l0
     chosen = frames_between(args.run_dir, args.t_from, args.t_to)
     bottom = args.sheet_bottom if args.sheet_bottom is not None else pool_y + 0.35 * (y_bed - pool_y)
@@ -130,6 +166,7 @@ def run(args):
         raise PlotError(f"--block must be > 0 s, got {args.block}")
     depth, edge_depth, u_mean, v_mean = [], [], [], []
     slab_x = [[] for _ in levels]
+    channel_frames = []
     for _, path in chosen:
         _, a = read_vtp(path)
         liquid = (a["kind"] == KIND_FLUID) & (a["phase"] == 0)
@@ -141,6 +178,7 @@ def run(args):
         if at_brink.any():
             u_mean.append(vel[at_brink, 0].mean())
             v_mean.append(vel[at_brink, 1].mean())
+        channel_frames.append((x, y, vel[:, 0]))
         sheet = x > x_brink
         for k, level in enumerate(levels):
             slab_x[k].extend(x[sheet & (np.abs(y - level) < 0.5 * l0)])
@@ -202,6 +240,11 @@ def run(args):
     print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
     print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
+    energy = channel_energy(channel_frames, l0, g, q, channel_start, x_brink, y_bed, args.energy_bin)
+    if energy:
+        print(f"channel energy  x [m], depth h [cm], mean U [m/s], Froude U/sqrt(g h), E/h_c (critical: 1.5):")
+        for x_mid, h, u, e in energy:
+            print(f"                {x_mid:.3f}  {100 * h:5.2f}  {u:.3f}  {u / np.sqrt(g * h):.2f}  {e / h_c:.3f}")
     print(f"wrote {png} and {csv_path}")
 
 
