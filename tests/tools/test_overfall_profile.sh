@@ -5,7 +5,7 @@
 # above the edge found 1 cm) moving at (U, V) = (0.7, -0.1) m/s up to the brink, a sheet of particles on the
 # ballistic path of a point leaving the brink's mid-depth with that velocity (three per level and one stray drop
 # far off, which the median must ignore), and a pool. The tool must find the 2 cm depth, the velocity, and the
-# sheet on that path (RMS under 2 mm); bad input exits 1 with a message.
+# sheet on that path (RMS under 2 mm), and the channel's specific energy; bad input exits 1 with a message.
 # Usage: test_overfall_profile.sh SOURCE_DIR
 set -euo pipefail
 source_dir=$1
@@ -68,7 +68,7 @@ PY
 out=$("$py" "$tool" "$run")
 echo "$out"
 "$py" - "$out" <<'PY'
-import re, sys
+import math, re, sys
 out = sys.argv[1]
 depth = float(re.search(r"brink depth\s+measured ([0-9.]+) cm", out).group(1))
 edge = float(re.search(r"over the last l0 only ([0-9.]+) cm", out).group(1))
@@ -80,7 +80,17 @@ assert abs(edge - 2.0) < 1e-9, edge
 assert abs(u - 0.7) < 1e-9 and abs(v + 0.1) < 1e-9, (u, v)
 assert abs(ratio - 2.0 / 2.967) < 0.002, ratio      # h_c = (0.016^2 / 9.81)^(1/3) = 2.967 cm
 assert rms < 0.2, rms
-print("overfall_profile: depth, velocity and nappe recovered")
+# The channel's specific energy in 4 cm bins from the inflow box's end (x = 0.04; no gate region here) to the
+# brink: water only in the bins [0.20, 0.24) and [0.24, 0.28), 4 columns of 2 rows each: h = 8 l0^2 / 0.04 = 2 cm,
+# U = 0.7 m/s, E = h + U^2 / (2 g) = 1.516 h_c; the bins without water are left out.
+rows = re.findall(r"^\s+(0\.\d{3})\s+([0-9.]+)\s+([-0-9.]+)\s+([0-9.]+)\s+([0-9.]+)$", out.split("channel energy")[1], re.M)
+assert [r[0] for r in rows] == ["0.220", "0.260"], rows
+h_c = (0.016 ** 2 / 9.81) ** (1 / 3)
+for x, h, u, froude, energy in rows:
+    assert float(h) == 2.0 and float(u) == 0.7, (x, h, u)
+    assert abs(float(froude) - 0.7 / math.sqrt(9.81 * 0.02)) < 0.006, froude
+    assert abs(float(energy) - (0.02 + 0.7 ** 2 / (2 * 9.81)) / h_c) < 0.0006, energy
+print("overfall_profile: depth, velocity, nappe and channel energy recovered")
 PY
 test -s "$run/plots/overfall.png"
 test -s "$run/plots/overfall.csv"
