@@ -78,7 +78,7 @@ def read_overfall_case(run_dir, bed_region, pool_y):
     return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y, channel_start
 
 
-def channel_energy(frames, l0, g, q, start, x_brink, y_bed, length):
+def channel_energy(frames, l0, g, start, x_brink, y_bed, length):
     """[(x_mid, h, U, E)] averaged over `frames` (lists of liquid x, y, u) in bins of `length` from start to x_brink:
     h the water above y_bed less l0/2 (particles times l0^2 over the bin), U their mean x-velocity,
     E = h + U^2/(2g). Empty where start is unknown or the bins do not fit."""
@@ -164,6 +164,8 @@ def run(args):
     levels = np.arange(y_bed - l0, bottom - 1e-9, -l0)
     if not args.block > 0.0:
         raise PlotError(f"--block must be > 0 s, got {args.block}")
+    if not args.energy_bin > 0.0:
+        raise PlotError(f"--energy-bin must be > 0 m, got {args.energy_bin}")
     depth, edge_depth, u_mean, v_mean = [], [], [], []
     slab_x = [[] for _ in levels]
     channel_frames = []
@@ -240,7 +242,7 @@ def run(args):
     print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
     print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
-    energy = channel_energy(channel_frames, l0, g, q, channel_start, x_brink, y_bed, args.energy_bin)
+    energy = channel_energy(channel_frames, l0, g, channel_start, x_brink, y_bed, args.energy_bin)
     if energy:
         print(f"channel energy  x [m], depth h [cm], mean U [m/s], Froude U/sqrt(g h), E/h_c (critical: 1.5):")
         for x_mid, h, u, e in energy:

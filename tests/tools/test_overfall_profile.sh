@@ -128,6 +128,8 @@ out=$("$py" "$tool" "$blocks" --from 0.5 --to 0.5)
 echo "$out" | grep -q "standard error  none" || { echo "one frame: $out"; exit 1; }
 if "$py" "$tool" "$blocks" --block 0 2>"$work/err"; then echo "--block 0 accepted"; exit 1; fi
 grep -q "block must be > 0" "$work/err"
+if "$py" "$tool" "$blocks" --energy-bin 0 2>"$work/err"; then echo "--energy-bin 0 accepted"; exit 1; fi
+grep -q "energy-bin must be > 0" "$work/err"
 
 # Bad input: a missing run, a run without a brink region.
 if "$py" "$tool" "$work/missing" 2>"$work/err"; then echo "missing run accepted"; exit 1; fi
