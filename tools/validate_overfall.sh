@@ -4,11 +4,13 @@
 # l0), and the brink depth (with its standard error from 0.5 s blocks) and nappe of tools/overfall_profile.py over
 # 2-6 s against Rouse's 0.715 h_c. Over 1-3 s alone the standard error is 0.03-0.07 h_c (seventh session).
 # Measured 2026-11-25 over 1-3 s (runs to 3 s): 0.891, 0.865 and 0.807 h_c; at 2.5 mm 0.793 (OVERFALL_SPACINGS=2.5,
-# 50 min on 1 thread). Also printed: the channel's specific energy from the gate to the brink (critical: 1.5 h_c).
+# 50 min on 1 thread). Over 2-6 s (runs to 6 s, 2026-11-25): paper 0.843, 0.863, 0.785 +- 0.02-0.04 h_c; stabilised
+# 0.765, 0.734, 0.732 +- 0.02 (nappe 0.62, 0.58, 0.32 cm). Also printed: the channel's specific energy from the gate
+# to the brink (critical: 1.5 h_c).
 # OVERFALL_SCHEME=stabilised runs numerics.scheme = "stabilised" with collision_distance = 0.8 (at the default 0.5
 # its 1 cm run diverged at 0.46 s; docs/waterfall.md, "The stabilised scheme on the channel and the overfall").
 # Usage: [OVERFALL_SPACINGS="10 7 5"] [OVERFALL_SCHEME=paper|stabilised] tools/validate_overfall.sh [BUILD_DIR] [OUT_DIR]
-#        (part of `make validate` with the default spacings in mm and the paper scheme; about 20 min on 2 cores)
+#        (part of `make validate` with the default spacings in mm and the paper scheme; about 35 min on one core)
 set -euo pipefail
 build=${1:-build}
 out=${2:-out/validate/overfall}
