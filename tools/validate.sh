@@ -63,3 +63,5 @@ run_case bubble_rise
 
 echo "== free overfall, water alone, l0 = 10, 7, 5 mm: brink depth against Rouse's 0.715 h_c (docs/waterfall.md)"
 "$(dirname "${BASH_SOURCE[0]}")/validate_overfall.sh" "$build" "$out/overfall"
+echo "== the same on the stabilised scheme (its channel keeps the critical energy; collision 0.8 l0)"
+OVERFALL_SCHEME=stabilised "$(dirname "${BASH_SOURCE[0]}")/validate_overfall.sh" "$build" "$out/overfall"
