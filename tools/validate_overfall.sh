@@ -15,13 +15,18 @@ set -euo pipefail
 build=${1:-build}
 out=${2:-out/validate/overfall}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+scheme=${OVERFALL_SCHEME:-paper}
+case "$scheme" in
+  paper | stabilised) ;;
+  *) echo "validate_overfall.sh: OVERFALL_SCHEME must be paper or stabilised, not '$scheme'" >&2; exit 1 ;;
+esac
 mkdir -p "$out"
 export OMP_WAIT_POLICY=passive
 
 # case_for L0_MM: the paper's waterfall, water alone, at spacing L0_MM, to 6 s.
 case_for() {
   local mm=$1
-  /usr/bin/python3 - "$here/cases/waterfall.toml" "$mm" "${OVERFALL_SCHEME:-paper}" <<'PY'
+  /usr/bin/python3 - "$here/cases/waterfall.toml" "$mm" "$scheme" <<'PY'
 import re, sys
 text, mm, scheme = open(sys.argv[1]).read(), float(sys.argv[2]), sys.argv[3]
 blocks = text.split("[[region]]")
@@ -34,14 +39,12 @@ text = re.sub(r"^field_spacing = .*", f"field_spacing = {2 * mm / 1000:g}", text
 text = re.sub(r"^end_time = .*", "end_time = 6.0", text, flags=re.M)
 if scheme == "stabilised":
     text = re.sub(r"^\[numerics\]$", '[numerics]\nscheme = "stabilised"\ncollision_distance = 0.8', text, count=1, flags=re.M)
-elif scheme != "paper":
-    sys.exit(f"OVERFALL_SCHEME must be paper or stabilised, not {scheme}")
 sys.stdout.write(text)
 PY
 }
 
 for mm in ${OVERFALL_SPACINGS:-10 7 5}; do
-  name="water_${mm}mm_${OVERFALL_SCHEME:-paper}"
+  name="water_${mm}mm_$scheme"
   case_for "$mm" >"$out/$name.toml"
   rm -rf "${out:?}/$name"
   "$build/mistfall" simulate "$out/$name.toml" --out "$out/$name" --plain-progress 2>"$out/$name.log" || true
