@@ -53,8 +53,11 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   problem_.carries_velocity.assign(n, 0);
   problem_.sound_speed.assign(n, std::numeric_limits<double>::infinity());
   problem_.density_of.assign(n, phases_[static_cast<int>(Phase::Liquid)].density);
+  // The inflow's driven water (open_boundaries.hpp) takes part as water, as in the liquid system: an unknown, its
+  // velocity in the divergence, not corrected.
+  auto inEquation = [&](std::int64_t i) { return p.kind[i] == ParticleKind::Fluid || p.kind[i] == ParticleKind::Inflow; };
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (!inEquation(i)) continue;
     const PhaseProperties& phase = phases_[static_cast<int>(p.phase[i])];
     problem_.takes_part[i] = 1;
     problem_.carries_velocity[i] = 1;
@@ -107,7 +110,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   solveSystem(p.pressure, "liquid", report_.ppe_iterations);
   report_.ppe_unknowns = system_.particle_of.size();
   for (std::int64_t i = 0; i < n; ++i)
-    if (p.kind[i] == ParticleKind::Fluid) p.pressure[i] = surface_pressure_[i];
+    if (inEquation(i)) p.pressure[i] = surface_pressure_[i];
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) p.pressure[system_.particle_of[r]] = pressure_unknowns_[r];
 }
 
