@@ -55,7 +55,9 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   problem_.density_of.assign(n, phases_[static_cast<int>(Phase::Liquid)].density);
   // The inflow's driven water (open_boundaries.hpp) takes part as water, as in the liquid system: an unknown, its
   // velocity in the divergence, not corrected.
-  auto inEquation = [&](std::int64_t i) { return p.kind[i] == ParticleKind::Fluid || p.kind[i] == ParticleKind::Inflow; };
+  auto inEquation = [&](std::int64_t i) {
+    return p.kind[i] == ParticleKind::Fluid || p.kind[i] == ParticleKind::Inflow;
+  };
   for (std::int64_t i = 0; i < n; ++i) {
     if (!inEquation(i)) continue;
     const PhaseProperties& phase = phases_[static_cast<int>(p.phase[i])];
