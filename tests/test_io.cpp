@@ -161,7 +161,8 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "gas_ppe_iterations,bubbles,bubble_particles,bubble_pressure,bubble_x,bubble_y,bubble_z,bubble_size,"
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
-      "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift",
+      "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift,"
+      "vented_in,vented_out",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -178,6 +179,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.dispersed_gas = 11; r.entrained_swaps = 12; r.regularised_rows = 13;
   r.gas_set_dt = 14; r.liquid_dt_steps = 15.25; r.entrained_gas = 16;
   r.gas_correction_capped = 17; r.gas_speed_capped = 18; r.largest_shift = 0.03125;
+  r.vented_in = 21; r.vented_out = 22;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -204,6 +206,8 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(17, rows[0].gas_correction_capped);
   EXPECT_EQ(18, rows[0].gas_speed_capped);
   EXPECT_EQ(0.03125, rows[0].largest_shift);
+  EXPECT_EQ(21, rows[0].vented_in);
+  EXPECT_EQ(22, rows[0].vented_out);
   EXPECT_EQ(7, rows[0].collisions);
   EXPECT_EQ(8, rows[0].gradient_fallbacks);
   EXPECT_EQ(9, rows[0].thin_support);
@@ -289,6 +293,8 @@ SimulationState<D> sampleState() {
   s.next_frame = 17;
   s.created = 1234567;
   s.removed = 7654321;
+  s.vented_in = 3456;
+  s.vented_out = 6543;
   s.particles = sampleParticles<D>(101);
   return s;
 }
@@ -307,6 +313,8 @@ void checkpointRoundTrip() {
   EXPECT_EQ(s.next_frame, r.next_frame);
   EXPECT_EQ(s.created, r.created);
   EXPECT_EQ(s.removed, r.removed);
+  EXPECT_EQ(s.vented_in, r.vented_in);
+  EXPECT_EQ(s.vented_out, r.vented_out);
   expectSameParticles(s.particles, r.particles);
 }
 

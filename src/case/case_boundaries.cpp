@@ -3,8 +3,12 @@
 //               discharge (q > 0 [m^2/s]): the buffer's water is driven at U = q / depth along direction,
 //               depth = the box's extent along the axis of gravity.
 //   [[outflow]] name, min, max: fluid entering the box is removed.
+//   [[vent]]    name, min, max (the opening, cut through a wall), direction (outward, a unit coordinate vector):
+//               the air's opening to the ambient (mps/gas_vent.hpp).
 // Checks: boxes well formed and inside the domain, holding lattice points; the flow axis not the gravity axis;
-// an inflow box overlaps no wall region and no other inflow or outflow box.
+// an inflow box overlaps no wall region and no other inflow or outflow box; a vent box overlaps no wall region and no
+// inflow, outflow or other vent box, and the case has gas.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -68,6 +72,15 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
     return f.node->as_array();
   };
   const int vertical = verticalAxis(c);
+  auto unitDirection = [&](const toml::table& t, const std::string& p, int& axis, int& sign) {
+    std::array<double, 3> dir{0.0, 0.0, 0.0};
+    rd.vector(t, p, "direction", c.dimension, dir, true);
+    int nonzero = 0;
+    for (int k = 0; k < c.dimension; ++k)
+      if (dir[k] != 0.0) ++nonzero, axis = k, sign = dir[k] > 0.0 ? 1 : -1;
+    if (nonzero != 1 || std::abs(dir[axis]) != 1.0)
+      rd.fail(p + ".direction is not a unit coordinate vector; allowed e.g. [1, 0] or [0, 0, -1]");
+  };
   if (const toml::array* a = tables("inflow")) {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table& t = *(*a)[i].as_table();
@@ -76,13 +89,7 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
       Inflow in;
       in.name = uniqueName(rd, t, p, names);
       readBox(rd, t, p, c, in.box);
-      std::array<double, 3> dir{0.0, 0.0, 0.0};
-      rd.vector(t, p, "direction", c.dimension, dir, true);
-      int nonzero = 0;
-      for (int k = 0; k < c.dimension; ++k)
-        if (dir[k] != 0.0) ++nonzero, in.axis = k, in.sign = dir[k] > 0.0 ? 1 : -1;
-      if (nonzero != 1 || std::abs(dir[in.axis]) != 1.0)
-        rd.fail(p + ".direction is not a unit coordinate vector; allowed e.g. [1, 0] or [0, 0, -1]");
+      unitDirection(t, p, in.axis, in.sign);
       if (in.axis == vertical)
         rd.fail(p + ".direction is along gravity; allowed a horizontal direction (the depth is measured along gravity)");
       rd.number(t, p, "discharge", {0.0, 100.0, true, false}, in.discharge, true);
@@ -107,7 +114,35 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
         if (overlap(out.box, c.inflows[j].box, c.dimension))
           rd.fail(p + " overlaps inflow \"" + c.inflows[j].name + "\"; allowed an outflow box clear of inflows");
       names.push_back(out.name);
+      boxes.push_back(out.box);
       c.outflows.push_back(out);
+    }
+  }
+  if (const toml::array* a = tables("vent")) {
+    const bool has_gas =
+        std::any_of(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.material == Material::Gas; });
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::table& t = *(*a)[i].as_table();
+      const std::string p = "vent[" + std::to_string(i) + "]";
+      rd.checkKeys(t, p, {"name", "min", "max", "direction"});
+      if (!has_gas)
+        rd.fail(p + ": a vent opens the air to the ambient, and this case has no gas region; allowed with a "
+                    "region of material = \"gas\"");
+      Vent v;
+      v.name = uniqueName(rd, t, p, names);
+      readBox(rd, t, p, c, v.box);
+      unitDirection(t, p, v.axis, v.sign);
+      for (const Region& r : c.regions)
+        if (r.material == Material::Wall && overlap(r.box, v.box, c.dimension))
+          rd.fail(p + " overlaps wall region \"" + r.name + "\"; allowed a vent box clear of walls (cut the opening "
+                      "out of the wall regions)");
+      for (std::size_t j = 0; j < boxes.size(); ++j)
+        if (overlap(v.box, boxes[j], c.dimension))
+          rd.fail(p + " overlaps boundary \"" + names[j] + "\"; allowed a vent box clear of inflows, outflows and "
+                      "other vents");
+      names.push_back(v.name);
+      boxes.push_back(v.box);
+      c.vents.push_back(v);
     }
   }
 }

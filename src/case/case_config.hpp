@@ -56,6 +56,16 @@ struct Outflow {
   Box box;
 };
 
+// A gas vent (mps/gas_vent.hpp): an opening of the air to the ambient atmosphere, a box cut through a wall (clear of
+// wall regions), filled with gas at set-up. Its gas holds the ambient pressure rho_g g.x and moves along `axis`
+// with the air in front of it; gas leaves through the outer face (the face on the `sign` side) and enters there.
+struct Vent {
+  std::string name;
+  Box box;
+  int axis = 0;  // the vent's axis
+  int sign = 1;  // +1: the outer face is box.max[axis] (outward along +axis), -1: box.min[axis]
+};
+
 struct PhaseProperties {
   double density = 1000.0;               // [kg/m^3]
   double kinematic_viscosity = 1.0e-6;   // [m^2/s]
@@ -227,6 +237,7 @@ struct CaseConfig {
   std::vector<Region> regions;
   std::vector<Inflow> inflows;
   std::vector<Outflow> outflows;
+  std::vector<Vent> vents;
   PhysicsConfig physics;
   NumericsConfig numerics;
   OutputConfig output;

@@ -254,6 +254,7 @@ Particles<D> buildParticles(const CaseConfig& c) {
   };
 
   // Water, then gas: one region after another in file order, each in lexicographic lattice order.
+  std::unordered_set<std::uint64_t> fluid_points;  // kept only for the vents below
   for (const Material m : {Material::Water, Material::Gas}) {
     const Phase phase = m == Material::Water ? Phase::Liquid : Phase::Gas;
     for (std::size_t r = 0; r < c.regions.size(); ++r) {
@@ -261,10 +262,17 @@ Particles<D> buildParticles(const CaseConfig& c) {
       Vec<D> u;
       for (int k = 0; k < D; ++k) u[k] = c.regions[r].initial_velocity[k];
       forEachRegionPoint(c, all, r, [&](const Index& i) {
-        if (!inInflow(i)) p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, phase);
+        if (inInflow(i)) return;
+        p.add(latticePoint<D>(c, i), u, ParticleKind::Fluid, phase);
+        if (!c.vents.empty()) fluid_points.insert(pack(i));
       });
     }
   }
+  // Then the vents' gas (mps/gas_vent.hpp): the points of each vent box that no region's fluid holds, at rest.
+  for (const Vent& v : c.vents)
+    forEachIndex<D>(boxRange(c, v.box), [&](const Index& i) {
+      if (fluid_points.insert(pack(i)).second) p.add(latticePoint<D>(c, i), Vec<D>::Zero(), ParticleKind::Fluid, Phase::Gas);
+    });
   // Then the inflow buffers' water, driven at the inflow speed (kind Inflow), in file order.
   for (std::size_t b = 0; b < c.inflows.size(); ++b) {
     Vec<D> u = Vec<D>::Zero();

@@ -105,6 +105,8 @@ DiagnosticsRow diagnosticsOf(const SimulationState<D>& s, const CaseConfig& conf
   }
   row.created = s.created;
   row.removed = s.removed;
+  row.vented_in = s.vented_in;
+  row.vented_out = s.vented_out;
   return row;
 }
 

@@ -21,7 +21,8 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 4;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids
+constexpr std::uint32_t kVersion = 5;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids,
+                                       // 5 the vents' counts
 constexpr std::uint32_t kOldestVersion = 2;  // still read (no fingerprint)
 constexpr std::uint64_t kMaxFingerprint = 1 << 24;
 
@@ -37,6 +38,7 @@ struct Header {
   std::int64_t removed = 0;
   std::string fingerprint;  // version 3: the case fingerprint (case/case_fingerprint.hpp)
   std::uint64_t next_id = 0;  // version 4: the id of the next particle made (older files: the particle count)
+  std::int64_t vented_in = 0, vented_out = 0;  // version 5: the vents' gas created and removed (older files: 0)
 };
 // (Serialized field by field, so struct padding never reaches the file.)
 
@@ -129,6 +131,10 @@ Header readHeader(Reader& r, const std::filesystem::path& file) {
     if (length) r.raw(h.fingerprint.data(), length);
   }
   h.next_id = h.version >= 4 ? r.value<std::uint64_t>() : h.count;
+  if (h.version >= 5) {
+    h.vented_in = r.value<std::int64_t>();
+    h.vented_out = r.value<std::int64_t>();
+  }
   return h;
 }
 
@@ -173,6 +179,8 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
     w.value(length);
     if (length) w.raw(fingerprint.data(), fingerprint.size());
     w.value(p.next_id);
+    w.value(s.vented_in);
+    w.value(s.vented_out);
     if (n) {
       w.raw(p.position.data(), n * sizeof(Vec<D>));
       w.raw(p.velocity.data(), n * sizeof(Vec<D>));
@@ -215,6 +223,8 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
   s.next_frame = static_cast<int>(h.next_frame);
   s.created = h.created;
   s.removed = h.removed;
+  s.vented_in = h.vented_in;
+  s.vented_out = h.vented_out;
   const std::size_t n = h.count;
   Particles<D>& p = s.particles;
   readVector(r, p.position, n);

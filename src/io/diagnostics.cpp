@@ -98,6 +98,8 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::gas_correction_capped>("gas_correction_capped"),
     column<&DiagnosticsRow::gas_speed_capped>("gas_speed_capped"),
     column<&DiagnosticsRow::largest_shift, 6>("largest_shift"),
+    column<&DiagnosticsRow::vented_in>("vented_in"),
+    column<&DiagnosticsRow::vented_out>("vented_out"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -85,6 +85,8 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     std::int64_t at = start[r];
     std::int64_t diagonal_at = -1;
     double diagonal = 0.0;
+    double known = 0.0;  // the Dirichlet neighbours' sum of k p_j
+    const bool boundary_values = !problem.boundary_value.empty();
     forEachPairWithin<D>(i, p.position, nl, re, takesPart, [&](std::int32_t j, const Vec<D>&, double, double w) {
       const double k = factor * w * coefficient(i, j);
       diagonal += k;
@@ -93,6 +95,8 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
         inner[at] = sys.row_of[j];
         value[at] = -k;
         ++at;
+      } else if (boundary_values) {
+        known += k * problem.boundary_value[j];
       }
     });
     if (diagonal_at < 0) diagonal_at = at++;
@@ -109,6 +113,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
       sys.rhs[r] = -rho / dt * divergence + source.relaxation * rho / (dt * dt) * compression;
     }
     if (!problem.extra_rhs.empty()) sys.rhs[r] += problem.extra_rhs[i];
+    sys.rhs[r] += known;
   }
 }
 

@@ -5,7 +5,7 @@
 // the sound speed c_i is per row (eq. (17) may apply to some rows only). For each unknown particle i:
 //   2D0/(n0 lambda) * sum_j w_ij (p_i - p_j) + p_i / (dt^2 c_i^2) = rho / dt^2 * (n*_i - n0) / n0
 // Boundary particles (taking part but not unknown: the free surface, n*_i < beta n0) hold p = 0 (Dirichlet):
-// they add to the diagonal only. Particles that do not take part (dummies) are left out.
+// they add to the diagonal only (a vent's gas holds the ambient pressure: PressureProblem::boundary_value). Particles that do not take part (dummies) are left out.
 // c = infinity gives the incompressible equation (9) exactly.
 // With the mixed source (Tanaka & Masunaga 2010) the right-hand side becomes
 //   rho * (-1 / dt * <div u*>_i + gamma / dt^2 * (n*_i - n0) / n0)      (divergence by divergence.hpp)
@@ -48,6 +48,9 @@ struct PressureProblem {
   std::vector<double> density_of;
   std::vector<double> interface_distance;
   std::vector<double> extra_rhs;    // known terms added to row i's right-hand side (empty = none)
+  // The pressure a Dirichlet boundary holds (taking part, not unknown; empty = 0 for all): a gas vent's ambient
+  // pressure (gas_vent.hpp). Row i's known neighbour j adds (its coefficient) * boundary_value[j] to the right.
+  std::vector<double> boundary_value;
 };
 
 // Free-surface flags of the single-phase system: fluid or wall particles with n*_i < beta n0.

@@ -14,7 +14,9 @@ struct SimulationState {
   double dt = 0.0;            // last time step [s]
   int next_frame = 0;         // index of the next frame to write
   std::int64_t created = 0;   // particles created by inflows since the start
-  std::int64_t removed = 0;   // particles removed by outflows since the start
+  std::int64_t removed = 0;   // particles removed by outflows since the start (liquid past a vent's face too)
+  std::int64_t vented_in = 0;   // gas particles created by the vents since the start (gas_vent.hpp)
+  std::int64_t vented_out = 0;  // gas particles removed by the vents since the start
   Particles<D> particles;
 };
 

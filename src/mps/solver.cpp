@@ -12,6 +12,7 @@
 #include "mps/bubble_pressure.hpp"
 #include "mps/collision.hpp"
 #include "mps/entrained_gas_rise.hpp"
+#include "mps/gas_vent.hpp"
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
@@ -123,6 +124,10 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
   if (reorder_pending_ || state_.step % kSortInterval == 0) sortParticlesBySpace();
+  if (!config_.vents.empty()) {  // the vents' particles now (gas_vent.hpp)
+    vent_at_start_ = ventOf<D>(state_.particles, config_);
+    vent_start_position_ = state_.particles.position;
+  }
   buildNeighbours();
   {
     auto t = timer_.scope(Stage::GasRegions);
@@ -197,9 +202,21 @@ const StepReport& MpsSolver<D>::step(double until) {
   }
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
+    if (!config_.vents.empty()) {
+      const VentExchange vented =
+          exchangeVentGas<D>(state_.particles, config_, vent_at_start_, vent_start_position_, dt,
+                             phases_[static_cast<int>(Phase::Gas)].density, gravity_);
+      report_.vented_in = vented.gas_in;
+      report_.vented_out = vented.gas_out;
+      state_.vented_in += vented.gas_in;
+      state_.vented_out += vented.gas_out;
+      state_.removed += vented.liquid_out;
+      report_.removed += vented.liquid_out;
+    }
     markEscaped();
-    report_.removed = removeOutflow<D>(state_.particles, config_);
-    state_.removed += report_.removed;
+    const std::int64_t outflow = removeOutflow<D>(state_.particles, config_);
+    report_.removed += outflow;
+    state_.removed += outflow;
   }
   const bool reached = until - state_.time <= dt;
   state_.time = reached ? until : state_.time + dt;

@@ -10,7 +10,7 @@
 //   -> gas system (when gas exists): buildNeighbours -> solveGasPressure (eq. (17), liquid as moving walls)
 //      -> correctGas (open gas: velocity and position; bubble gas: position only)
 //      -> riseEntrainedGas (gas below a bubble's resolution climbs through the water by exchange)
-//   -> markEscaped -> removeOutflow -> checkHealth
+//   -> exchangeVentGas (gas_vent.hpp) -> markEscaped -> removeOutflow -> checkHealth
 // numerics.coupling = "one_equation" replaces the liquid system, the bubbles and the gas system by one
 // variable-density projection of both phases (solveOneEquationPressure -> correctOneEquation).
 #pragma once
@@ -61,7 +61,9 @@ struct StepReport {
   std::size_t gas_ppe_unknowns = 0;
   std::size_t bubbles = 0;         // enclosed gas regions at the start of the step
   std::int64_t created = 0;        // particles created by inflows in the step
-  std::int64_t removed = 0;        // particles removed by outflows in the step
+  std::int64_t removed = 0;        // particles removed by outflows in the step (and liquid past a vent's face)
+  std::int64_t vented_in = 0;      // gas created at the vents' outer faces in the step (gas_vent.hpp)
+  std::int64_t vented_out = 0;     // gas removed past the vents' outer faces in the step
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t gas_correction_cuts = 0;     // ... by gas_correction_limit
@@ -177,6 +179,10 @@ class MpsSolver {
   SurfaceTangents<D> surface_tangents_;      // stabilised: near the free surface, its normal (surface_tangent.hpp)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
+  // The vents' particles at the step's start (gas_vent.hpp): which vent each is in (-1: none; empty without
+  // vents) and where it was; they are driven from there, and their gas is the gas system's Dirichlet boundary.
+  std::vector<int> vent_at_start_;
+  std::vector<Vec<D>> vent_start_position_;
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;

@@ -7,6 +7,7 @@
 
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/entrained_gas_rise.hpp"
+#include "mps/gas_vent.hpp"
 #include "mps/gradient.hpp"
 #include "mps/number_density.hpp"
 #include "mps/solver.hpp"
@@ -57,6 +58,19 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       ++report_.regularised_rows;
     }
   }
+  // The vents' gas holds the ambient pressure rho_g g.x (gas_vent.hpp): a Dirichlet boundary of the system.
+  problem_.boundary_value.clear();
+  auto vented = [&](std::int64_t i) {
+    return static_cast<std::size_t>(i) < vent_at_start_.size() && vent_at_start_[i] >= 0 && roles_.open_gas[i];
+  };
+  if (!vent_at_start_.empty()) {
+    problem_.boundary_value.assign(n, 0.0);
+    for (std::int64_t i = 0; i < n; ++i)
+      if (vented(i) && problem_.takes_part[i]) {
+        problem_.unknown[i] = 0;
+        problem_.boundary_value[i] = ambientPressure<D>(p.position[i], gas.density, gravity_);
+      }
+  }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
   problem_.extra_rhs.clear();
@@ -71,6 +85,9 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
   report_.gas_ppe_unknowns = system_.particle_of.size();
   gas_pressure_.assign(n, 0.0);
+  if (!problem_.boundary_value.empty())
+    for (std::int64_t i = 0; i < n; ++i)
+      if (vented(i)) gas_pressure_[i] = problem_.boundary_value[i];
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
     const double solved = pressure_unknowns_[r];

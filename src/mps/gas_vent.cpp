@@ -1,0 +1,163 @@
+#include "mps/gas_vent.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "case/scene.hpp"
+
+namespace mistfall {
+
+namespace {
+
+// The lattice columns of a vent: one per lattice point of the box's cross-section (the axes but the vent's).
+template <int D>
+struct Columns {
+  std::array<double, 3> first{0.0, 0.0, 0.0};  // the first lattice coordinate on each cross axis
+  std::array<int, 3> count{1, 1, 1};           // lattice points on each cross axis (1 on the vent's axis)
+  int total = 1;
+  double outer = 0.0, inner = 0.0;             // the outer and inner faces, as outward coordinates sign * x[axis]
+
+  Columns(const CaseConfig& c, const Vent& v) {
+    for (int k = 0; k < D; ++k) {
+      if (k == v.axis) continue;
+      const std::vector<double> x = latticeCoordinates(c, v.box, k);
+      first[k] = x.front();
+      count[k] = static_cast<int>(x.size());
+      total *= count[k];
+    }
+    outer = v.sign > 0 ? v.box.max[v.axis] : -v.box.min[v.axis];
+    inner = v.sign > 0 ? v.box.min[v.axis] : -v.box.max[v.axis];
+  }
+  // The column of a point inside the box's cross-section (-1 outside it).
+  int of(const Vec<D>& x, const Vent& v, double l0) const {
+    int index = 0;
+    for (int k = D - 1; k >= 0; --k) {
+      if (k == v.axis) continue;
+      if (x[k] < v.box.min[k] || x[k] >= v.box.max[k]) return -1;
+      const int i = std::clamp(static_cast<int>(std::lround((x[k] - first[k]) / l0)), 0, count[k] - 1);
+      index = index * count[k] + i;
+    }
+    return index;
+  }
+  // The lattice point of column `col` at outward coordinate xi.
+  Vec<D> point(int col, double xi, const Vent& v, double l0) const {
+    Vec<D> x = Vec<D>::Zero();
+    for (int k = 0; k < D; ++k) {
+      if (k == v.axis) continue;
+      x[k] = first[k] + l0 * (col % count[k]);
+      col /= count[k];
+    }
+    x[v.axis] = v.sign * xi;
+    return x;
+  }
+};
+
+template <int D>
+bool insideBox(const Vec<D>& x, const Box& b) {
+  for (int k = 0; k < D; ++k)
+    if (x[k] < b.min[k] || x[k] >= b.max[k]) return false;
+  return true;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<int> ventOf(const Particles<D>& p, const CaseConfig& c) {
+  std::vector<int> vent(p.size(), -1);
+  if (c.vents.empty()) return vent;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.kind[i] != ParticleKind::Fluid) continue;
+    for (std::size_t v = 0; v < c.vents.size(); ++v)
+      if (insideBox<D>(p.position[i], c.vents[v].box)) {
+        vent[i] = static_cast<int>(v);
+        break;
+      }
+  }
+  return vent;
+}
+
+template <int D>
+VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::vector<int>& start_vent,
+                             const std::vector<Vec<D>>& start, double dt, double gas_density, const Vec<D>& gravity) {
+  VentExchange exchange;
+  if (c.vents.empty()) return exchange;
+  const double l0 = c.numerics.particle_spacing;
+  const std::size_t n = start_vent.size();  // the particles that existed at the step's start
+  std::vector<char> remove(p.size(), 0);
+  std::vector<Vec<D>> created_at;
+  std::vector<Vec<D>> created_velocity;
+  for (std::size_t v = 0; v < c.vents.size(); ++v) {
+    const Vent& vent = c.vents[v];
+    const Columns<D> cols(c, vent);
+    const int a = vent.axis;
+    // u_n of each column: the mean outward velocity of the domain's gas within 2 l0 in front of the inner face.
+    std::vector<double> sum(cols.total, 0.0);
+    std::vector<int> count(cols.total, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (start_vent[i] >= 0 || p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Gas) continue;
+      const double xi = vent.sign * p.position[i][a];
+      if (xi >= cols.inner || xi < cols.inner - 2.0 * l0) continue;
+      const int col = cols.of(p.position[i], vent, l0);
+      if (col < 0) continue;
+      sum[col] += vent.sign * p.velocity[i][a];
+      ++count[col];
+    }
+    std::vector<double> un(cols.total, 0.0);
+    for (int k = 0; k < cols.total; ++k)
+      if (count[k] > 0) un[k] = sum[k] / count[k];
+    // Drive the vent's gas; then remove what passed the outer face, and find the outermost fluid particle of each
+    // column (what entered the box in the step included).
+    for (std::size_t i = 0; i < n; ++i) {
+      if (start_vent[i] != static_cast<int>(v) || p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Gas)
+        continue;
+      const int col = cols.of(start[i], vent, l0);
+      if (col < 0) continue;
+      p.velocity[i] = Vec<D>::Zero();
+      p.velocity[i][a] = vent.sign * un[col];
+      p.position[i] = start[i] + dt * p.velocity[i];
+    }
+    std::vector<double> outermost(cols.total, -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.kind[i] != ParticleKind::Fluid) continue;
+      const double xi = vent.sign * p.position[i][a];
+      if (xi < cols.inner) continue;
+      const int col = cols.of(p.position[i], vent, l0);
+      if (col < 0) continue;
+      if (xi >= cols.outer) {
+        if (i >= n || start_vent[i] != static_cast<int>(v)) continue;  // only a vent's own particles leave by it
+        remove[i] = 1;
+        ++(p.phase[i] == Phase::Gas ? exchange.gas_out : exchange.liquid_out);
+      } else {
+        outermost[col] = std::max(outermost[col], xi);
+      }
+    }
+    // New layers behind each column's outermost particle, one l0 apart, while they lie inside the box (an empty
+    // column restarts at its inner face).
+    for (int k = 0; k < cols.total; ++k) {
+      double xi = std::isfinite(outermost[k]) ? outermost[k] : cols.inner - 0.5 * l0;
+      for (xi += l0; xi < cols.outer; xi += l0) {
+        created_at.push_back(cols.point(k, xi, vent, l0));
+        Vec<D> u = Vec<D>::Zero();
+        u[a] = vent.sign * un[k];
+        created_velocity.push_back(u);
+      }
+    }
+  }
+  if (exchange.gas_out + exchange.liquid_out > 0) p.erase(remove);
+  for (std::size_t k = 0; k < created_at.size(); ++k) {
+    p.add(created_at[k], created_velocity[k], ParticleKind::Fluid, Phase::Gas);
+    p.pressure.back() = ambientPressure<D>(created_at[k], gas_density, gravity);
+  }
+  exchange.gas_in = static_cast<std::int64_t>(created_at.size());
+  return exchange;
+}
+
+template std::vector<int> ventOf<2>(const Particles<2>&, const CaseConfig&);
+template std::vector<int> ventOf<3>(const Particles<3>&, const CaseConfig&);
+template VentExchange exchangeVentGas<2>(Particles<2>&, const CaseConfig&, const std::vector<int>&,
+                                         const std::vector<Vec<2>>&, double, double, const Vec<2>&);
+template VentExchange exchangeVentGas<3>(Particles<3>&, const CaseConfig&, const std::vector<int>&,
+                                         const std::vector<Vec<3>>&, double, double, const Vec<3>&);
+
+}  // namespace mistfall

@@ -1,0 +1,52 @@
+// Gas vents: openings of the air to the ambient atmosphere (the case file's [[vent]], case_config.hpp; issue 16,
+// item 3: a laboratory weir's nappe is ventilated). A vent is a box cut through a wall, filled with gas at set-up,
+// with an outward axis n (case/scene.cpp fills the box's lattice points that no region's fluid holds). Its gas is a buffer in the manner of the SPH open boundaries of Lastiwka, Basa & Quinlan
+// (2009, "Permeable and non-reflecting boundary conditions in SPH", IJNMF 61) and Tafuni, Dominguez, Vacondio &
+// Crespo (2018, "A versatile algorithm for the treatment of open boundary conditions in SPH GPU models", CMAME 342):
+//  * the pressure is imposed: the ambient air at rest, p_a(x) = rho_g g.x (zero at the case's origin), is a
+//    Dirichlet boundary of the gas system (solver_gas.cpp) on the vent's gas particles;
+//  * the velocity is extrapolated with zero normal gradient: each lattice column of the vent (its particles nearest
+//    one lattice line along n) moves as one, along n, at the mean normal velocity u_n of the domain's gas within
+//    2 l0 in front of the vent's inner face (0 where there is none);
+//  * gas that passes the outer face leaves the domain (removed, counted); where a column has moved inward so far
+//    that one more lattice layer fits between its outermost particle and the outer face, that layer is created
+//    with the column's velocity (as an inflow buffer creates its layers, open_boundaries.hpp).
+// The air then leaves where the domain pushes it out and enters where the domain draws it in, at the ambient
+// pressure. Liquid in a vent is not driven; liquid that passes the outer face is removed like an outflow's.
+// Nothing about a vent is stored between steps but its particles, so a checkpoint restarts it exactly.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "case/case_config.hpp"
+#include "mps/particles.hpp"
+
+namespace mistfall {
+
+// The ambient air's pressure at x: rho_g g.x [Pa].
+template <int D>
+double ambientPressure(const Vec<D>& x, double gas_density, const Vec<D>& gravity) {
+  return gas_density * gravity.dot(x);
+}
+
+// Which vent each particle is in (-1: none), by position.
+template <int D>
+std::vector<int> ventOf(const Particles<D>& p, const CaseConfig& c);
+
+// What the vents exchanged with the ambient in one step (particles).
+struct VentExchange {
+  std::int64_t gas_in = 0;      // gas created at outer faces
+  std::int64_t gas_out = 0;     // gas removed past outer faces
+  std::int64_t liquid_out = 0;  // liquid removed past outer faces
+};
+
+// Drives the vents' gas over the step: `start` holds, for each particle with start_vent[i] >= 0 (its vent at the
+// step's start), its position then. Each such gas particle is set to start + dt u_n n with its column's u_n; then
+// what passed an outer face is removed and the layers that fit are created (the arrays are compacted, order
+// kept; new particles come last). `gravity` and `gas_density` give the new particles' ambient pressure.
+template <int D>
+VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::vector<int>& start_vent,
+                             const std::vector<Vec<D>>& start, double dt, double gas_density, const Vec<D>& gravity);
+
+}  // namespace mistfall
