@@ -157,6 +157,13 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
+  // The operators of the gas system (solver_gas.cpp; docs/two-phase.md). false ("paper"): the paper's MPS, wall
+  // particles next to gas carry unknowns (their rows short of neighbours) and the gradient is the minimum-neighbour
+  // form; still air under gravity drifts. true ("stabilised", experimental): mirrored walls (wall_mirror.hpp), the
+  // corrected gradient away from the liquid (corrected_gradient.hpp; the minimum-neighbour form, with the walls
+  // mirrored, next to it) and the particle shifting of numerics.particle_shifting on the open gas, so still air
+  // is an equilibrium.
+  bool gas_stabilised = false;
   // How a bubble's gas moves (docs/two-phase.md). FollowLiquid: with the liquid's velocity extended into the bubble,
   // re-spaced in position by the gas system. OwnPressure: like open gas, by its own pressure gradient from the gas
   // system (the paper's single-phase view of the gas), velocity and position.

@@ -149,6 +149,7 @@ class MpsSolver {
   CorrectedGradient<D> oneEquationGradient(std::size_t i, bool repulsive = false) const;
   void solveGasPressure(double dt);
   void correctGas(double dt);
+  Vec<D> stabilisedGasGradient(std::size_t i) const;
   void moveBubbleGas(double dt);
   void riseEntrainedGas(double dt);
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.

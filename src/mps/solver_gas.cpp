@@ -10,6 +10,9 @@
 #include "mps/gas_vent.hpp"
 #include "mps/gradient.hpp"
 #include "mps/number_density.hpp"
+#include "mps/pair_loop.hpp"
+#include "mps/particle_shifting.hpp"
+#include "mps/wall_mirror.hpp"
 #include "mps/solver.hpp"
 
 namespace mistfall {
@@ -42,11 +45,13 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.density = gas.density;
   problem_.sound_speed.assign(n, gas.sound_speed);
   const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
+  const bool mirrored = config_.numerics.gas_stabilised;  // walls mirrored (wall_mirror.hpp)
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
+    if (mirrored && isMirroredWall(p.kind[i])) problem_.takes_part[i] = 0;  // the walls' part is known (below)
     problem_.unknown[i] = problem_.takes_part[i] &&
                           (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
-    problem_.carries_velocity[i] = isActive(p.kind[i]);
+    problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
     // P_B), so a (nearly) incompressible gas gets a regularising sound speed of numerics.bubble_regularisation
@@ -80,6 +85,15 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       if (roles_.open_gas[i] && problem_.unknown[i])
         problem_.extra_rhs[i] = compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]);
   }
+  // numerics.gas_operators = "stabilised": the walls' known part of each row (wall_mirror.hpp), the gas's density.
+  if (mirrored) {
+    if (problem_.extra_rhs.empty()) problem_.extra_rhs.assign(n, 0.0);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i)
+      if (problem_.unknown[i])
+        problem_.extra_rhs[i] +=
+            mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, gas.density, gravity_, dt);
+  }
   assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
   solveSystem(p.pressure, "gas", report_.gas_ppe_iterations);
@@ -99,6 +113,44 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     p.pressure[i] = gas_pressure_[i];
     p.number_density[i] = gas_number_density_[i];
   }
+}
+
+// The gradient of the gas system's pressure at gas particle i with mirrored walls
+// (numerics.gas_operators = "stabilised"): a wall or dummy neighbour b holds p_i + rho_g g . r_ib (wall_mirror.hpp).
+// Away from the liquid the corrected gradient (exact for the hydrostatic field whatever the arrangement); with liquid
+// within re the minimum-neighbour form (its repulsion keeps the gas off the water: the corrected form there diverged
+// in a tank of still water under air within 0.4 s).
+template <int D>
+Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t i) const {
+  const auto& p = state_.particles;
+  const double rho = phases_[static_cast<int>(Phase::Gas)].density;
+  auto value = [&](std::int32_t j) {
+    return isMirroredWall(p.kind[j]) ? gas_pressure_[i] + rho * gravity_.dot(p.position[j] - p.position[i])
+                                     : gas_pressure_[j];
+  };
+  auto inMinimum = [&](std::int32_t j) {
+    return roles_.inGasSystem(j) || roles_.gas_side_wall[j] || isMirroredWall(p.kind[j]);
+  };
+  auto difference = [&](std::int32_t j, const Vec<D>&) { return value(j) - gas_pressure_[i]; };
+  const double re = constants_.re_number_density;
+  bool liquid = false;
+  forEachPairWithin<D>(i, p.position, near_neighbours_, re, inMinimum, [&](std::int32_t j, const Vec<D>&, double, double) {
+    liquid = liquid || (!isMirroredWall(p.kind[j]) && p.phase[j] == Phase::Liquid);
+  });
+  if (!liquid)
+    return correctedGradientAt<D>(i, p.position, near_neighbours_, constants_,
+                                  config_.numerics.gradient_correction_min_determinant, inMinimum, difference)
+        .value;
+  double hat = 0.0;
+  Vec<D> sum = Vec<D>::Zero(), first = Vec<D>::Zero();
+  forEachPairWithin<D>(i, p.position, near_neighbours_, re, inMinimum,
+                       [&](std::int32_t j, const Vec<D>& rij, double r2, double w) {
+                         const double d = difference(j, rij);
+                         hat = std::min(hat, d);
+                         sum += rij * (d * w / r2);
+                         first += rij * (w / r2);
+                       });
+  return (sum - hat * first) * (double(D) / constants_.n0);
 }
 
 // Correction of the gas with the gas system's pressures (the liquid is not moved by it).
@@ -121,8 +173,10 @@ void MpsSolver<D>::correctGas(double dt) {
 #pragma omp parallel for schedule(static) reduction(+ : capped, correction_cuts, speed_cuts)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
-    change[i] = -dt / rho * gradientAt<D>(i, p.position, gas_pressure_, near_neighbours_, constants_,
-                                          GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
+    change[i] = -dt / rho * (config_.numerics.gas_stabilised
+                                 ? stabilisedGasGradient(i)
+                                 : gradientAt<D>(i, p.position, gas_pressure_, near_neighbours_, constants_,
+                                                 GradientForm::MinimumNeighbour, carriesPressure, solvedPressure));
     const double size = change[i].norm();
     bool cut = false;
     if (limit > 0.0 && size > limit) change[i] *= limit / size, cut = true, ++correction_cuts;
@@ -144,6 +198,19 @@ void MpsSolver<D>::correctGas(double dt) {
     if (!roles_.inGasSystem(i)) continue;
     if (!roles_.enclosed_gas[i] || own_pressure) p.velocity[i] += change[i];
     p.position[i] += dt * change[i];
+  }
+  // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
+  // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced).
+  if (config_.numerics.gas_stabilised && config_.numerics.particle_shifting > 0.0) {
+    std::vector<Vec<D>> shift(n, Vec<D>::Zero());
+    auto all = [&](std::int32_t j) { return isActive(p.kind[j]); };
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (!roles_.open_gas[i]) continue;
+      shift[i] = shiftingDisplacement<D>(i, p.position, near_neighbours_, constants_, config_.numerics.particle_shifting,
+                                         p.velocity[i], dt, Vec<D>::Zero(), all);
+    }
+    for (std::int64_t i = 0; i < n; ++i) p.position[i] += shift[i];
   }
 }
 
@@ -168,6 +235,7 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
 #define MISTFALL_INSTANTIATE(D)                              \
   template void MpsSolver<D>::solveGasPressure(double);     \
   template void MpsSolver<D>::correctGas(double);           \
+  template Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t) const; \
   template void MpsSolver<D>::riseEntrainedGas(double);     \
   template void MpsSolver<D>::moveBubbleGas(double);
 MISTFALL_INSTANTIATE(2)
