@@ -150,6 +150,7 @@ class MpsSolver {
   void solveGasPressure(double dt);
   void correctGas(double dt);
   Vec<D> stabilisedGasGradient(std::size_t i) const;
+  bool mirroredLiquid(std::size_t j) const;
   void moveBubbleGas(double dt);
   void riseEntrainedGas(double dt);
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.

@@ -23,6 +23,14 @@ namespace mistfall {
 // with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
 // pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
 // P_B comes from the liquid system).
+// numerics.gas_operators = "stabilised": the liquid that is a wall of the gas system (not gas of any kind), mirrored
+// like the walls: seen from gas particle i it holds p_i + rho_g g . r_ij, and its velocity enters the divergence.
+template <int D>
+bool MpsSolver<D>::mirroredLiquid(std::size_t j) const {
+  const auto& p = state_.particles;
+  return p.phase[j] == Phase::Liquid && !isMirroredWall(p.kind[j]) && isActive(p.kind[j]);
+}
+
 template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
@@ -45,13 +53,14 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.density = gas.density;
   problem_.sound_speed.assign(n, gas.sound_speed);
   const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
-  const bool mirrored = config_.numerics.gas_stabilised;  // walls mirrored (wall_mirror.hpp)
+  const bool mirrored = config_.numerics.gas_stabilised;  // walls and liquid mirrored (wall_mirror.hpp)
+  auto liquidWall = [&](std::int64_t j) { return mirroredLiquid(static_cast<std::size_t>(j)); };
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
-    if (mirrored && isMirroredWall(p.kind[i])) problem_.takes_part[i] = 0;  // the walls' part is known (below)
+    if (mirrored && (isMirroredWall(p.kind[i]) || liquidWall(i))) problem_.takes_part[i] = 0;  // known part below
     problem_.unknown[i] = problem_.takes_part[i] &&
                           (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
-    problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));
+    problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));  // the liquid's counts
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
     // P_B), so a (nearly) incompressible gas gets a regularising sound speed of numerics.bubble_regularisation
@@ -85,14 +94,22 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       if (roles_.open_gas[i] && problem_.unknown[i])
         problem_.extra_rhs[i] = compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]);
   }
-  // numerics.gas_operators = "stabilised": the walls' known part of each row (wall_mirror.hpp), the gas's density.
+  // numerics.gas_operators = "stabilised": the known part of each row from the walls (wall_mirror.hpp: hydrostatic
+  // and the walls' rest in the divergence) and from the liquid (hydrostatic only: its velocity is in the divergence).
   if (mirrored) {
     if (problem_.extra_rhs.empty()) problem_.extra_rhs.assign(n, 0.0);
+    auto liquid = [&](std::int32_t j) { return mirroredLiquid(static_cast<std::size_t>(j)); };
+    const double factor = constants_.laplacianFactor();
 #pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < n; ++i)
-      if (problem_.unknown[i])
-        problem_.extra_rhs[i] +=
-            mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, gas.density, gravity_, dt);
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (!problem_.unknown[i]) continue;
+      double hydrostatic = 0.0;
+      forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, liquid,
+                           [&](std::int32_t, const Vec<D>& rib, double, double w) { hydrostatic += w * gravity_.dot(rib); });
+      problem_.extra_rhs[i] +=
+          mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, gas.density, gravity_, dt) +
+          factor * gas.density * hydrostatic;
+    }
   }
   assemblePressureSystem<D>(p, gas_number_density_, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
@@ -115,18 +132,18 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   }
 }
 
-// The gradient of the gas system's pressure at gas particle i with mirrored walls
-// (numerics.gas_operators = "stabilised"): a wall or dummy neighbour b holds p_i + rho_g g . r_ib (wall_mirror.hpp).
-// Away from the liquid the corrected gradient (exact for the hydrostatic field whatever the arrangement); with liquid
-// within re the minimum-neighbour form (its repulsion keeps the gas off the water: the corrected form there diverged
-// in a tank of still water under air within 0.4 s).
+// The gradient of the gas system's pressure at gas particle i with mirrored walls and liquid
+// (numerics.gas_operators = "stabilised"): a wall, dummy or liquid neighbour b holds p_i + rho_g g . r_ib
+// (wall_mirror.hpp). Away from the liquid the corrected gradient (exact for the hydrostatic field whatever the
+// arrangement); with liquid within re the minimum-neighbour form (its repulsion keeps the gas off the water: over the
+// paper scheme's drifting water the corrected form there let the air reach 2.8 m/s within 1 s, docs/two-phase.md).
 template <int D>
 Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t i) const {
   const auto& p = state_.particles;
   const double rho = phases_[static_cast<int>(Phase::Gas)].density;
   auto value = [&](std::int32_t j) {
-    return isMirroredWall(p.kind[j]) ? gas_pressure_[i] + rho * gravity_.dot(p.position[j] - p.position[i])
-                                     : gas_pressure_[j];
+    const bool mirrored = isMirroredWall(p.kind[j]) || mirroredLiquid(j);
+    return mirrored ? gas_pressure_[i] + rho * gravity_.dot(p.position[j] - p.position[i]) : gas_pressure_[j];
   };
   auto inMinimum = [&](std::int32_t j) {
     return roles_.inGasSystem(j) || roles_.gas_side_wall[j] || isMirroredWall(p.kind[j]);
@@ -236,6 +253,7 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
   template void MpsSolver<D>::solveGasPressure(double);     \
   template void MpsSolver<D>::correctGas(double);           \
   template Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t) const; \
+  template bool MpsSolver<D>::mirroredLiquid(std::size_t) const;         \
   template void MpsSolver<D>::riseEntrainedGas(double);     \
   template void MpsSolver<D>::moveBubbleGas(double);
 MISTFALL_INSTANTIATE(2)
