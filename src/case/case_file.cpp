@@ -247,9 +247,6 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     rd.fail("numerics.scheme = \"stabilised\" is built and validated for water and walls only (with air: "
             "numerics.coupling = \"one_equation\", experimental); this case has gas regions: use numerics.scheme = "
             "\"paper\" (docs/validation.md)");
-  if (!c.vents.empty() && c.numerics.coupling == NumericsConfig::Coupling::OneEquation)
-    rd.fail("vent[0] \"" + c.vents[0].name + "\": vents are built for numerics.coupling = \"two_systems\" (the gas "
-            "system holds their ambient pressure; docs/case-file.md); allowed without vents on the one equation");
   detail::readTexture(rd, root, c);
   detail::readRender(rd, root, c);
   return c;

@@ -14,6 +14,7 @@
 #include "mps/interface_density.hpp"
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
+#include "mps/gas_vent.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -47,6 +48,10 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
                          [&](std::int32_t, const Vec<D>&, double, double) { any = true; });
     return any;
   };
+  auto vented = [&](std::int64_t i) {
+    return static_cast<std::size_t>(i) < vent_at_start_.size() && vent_at_start_[i] >= 0 &&
+           p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas;
+  };
   // Who takes part: every fluid particle; walls are mirrored (no unknown). Densities, sound speeds, phi.
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);
@@ -72,6 +77,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
         p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
     auto bordersSpace = [&] { return p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i); };
     problem_.unknown[i] = closed || !short_of_neighbours || !bordersSpace();  // bordersSpace only when short
+    if (vented(i)) problem_.unknown[i] = 0;  // a vent's gas holds the ambient pressure (below)
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   makeThinRowsFreeSurface();  // solver_liquid_stabilised.cpp
@@ -85,6 +91,9 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     if (!problem_.unknown[i])
       surface_pressure_[i] = problem_.density_of[i] * surfaceParticlePressure<D>(last[i], constants_.l0);
   }
+  // The vents' gas (gas_vent.hpp): the ambient pressure rho_g g.x, a Dirichlet value like a surface particle's.
+  for (std::int64_t i = 0; i < n; ++i)
+    if (vented(i)) surface_pressure_[i] = ambientPressure<D>(p.position[i], problem_.density_of[i], gravity_);
   findSurfaceTangents(last);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   problem_.extra_rhs.assign(n, 0.0);
