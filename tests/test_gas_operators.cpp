@@ -8,6 +8,7 @@
 #include "case/case_file.hpp"
 #include "case/scene.hpp"
 #include "mps/solver.hpp"
+#include "support/air_column.hpp"
 
 using namespace mistfall;
 
@@ -16,39 +17,7 @@ namespace {
 // A sealed box of air 10 cm wide and 30 cm high, l0 = 1 cm, at rest; a puddle in a cup beside it (the case needs
 // water) takes no part.
 std::string airColumn(const std::string& operators) {
-  return R"(
-[case]
-name = "air_column"
-dimension = 2
-[domain]
-min = [-0.04, -0.04]
-max = [0.30, 0.34]
-[physics.gas]
-sound_speed = 340.0
-[numerics]
-particle_spacing = 0.01
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-gas_domain = "closed"
-gas_operators = ")" + operators + R"("
-[output]
-end_time = 1.0
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, 0.0]
-max = [0.1, 0.3]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.0, 0.34]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, -0.04]
-max = [0.14, 0.34]
+  return test_support::airColumnCase("gas_operators = \"" + operators + "\"\n", 0.0, R"(
 [[region]]
 name = "floor"
 material = "wall"
@@ -59,22 +28,7 @@ name = "lid"
 material = "wall"
 min = [0.0, 0.3]
 max = [0.1, 0.34]
-[[region]]
-name = "cup"
-material = "wall"
-min = [0.14, -0.04]
-max = [0.30, 0.0]
-[[region]]
-name = "cup_end"
-material = "wall"
-min = [0.26, 0.0]
-max = [0.30, 0.1]
-[[region]]
-name = "puddle"
-material = "water"
-min = [0.14, 0.0]
-max = [0.26, 0.03]
-)";
+)");
 }
 
 // The fastest air particle after `seconds`.

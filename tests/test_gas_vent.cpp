@@ -11,6 +11,7 @@
 #include "case/scene.hpp"
 #include "mps/gas_vent.hpp"
 #include "mps/solver.hpp"
+#include "support/air_column.hpp"
 #include "support/case_text.hpp"
 
 using namespace mistfall;
@@ -22,54 +23,7 @@ namespace {
 // (outward -y) and one across its top (outward +y); the air starts at `speed` upward. A puddle in a cup beside it
 // (the case needs water) takes no part.
 std::string ductCase(double speed) {
-  return R"(
-[case]
-name = "duct"
-dimension = 2
-[domain]
-min = [-0.04, -0.04]
-max = [0.30, 0.34]
-[physics.gas]
-sound_speed = 340.0
-[numerics]
-particle_spacing = 0.01
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-gas_domain = "closed"
-[output]
-end_time = 1.0
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, 0.0]
-max = [0.1, 0.3]
-velocity = [0.0, )" + std::to_string(speed) + R"(]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.0, 0.34]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.1, -0.04]
-max = [0.14, 0.34]
-[[region]]
-name = "cup"
-material = "wall"
-min = [0.14, -0.04]
-max = [0.30, 0.0]
-[[region]]
-name = "cup_end"
-material = "wall"
-min = [0.26, 0.0]
-max = [0.30, 0.1]
-[[region]]
-name = "puddle"
-material = "water"
-min = [0.14, 0.0]
-max = [0.26, 0.03]
+  return test_support::airColumnCase("", speed, R"(
 [[vent]]
 name = "bottom"
 min = [0.0, -0.04]
@@ -80,7 +34,7 @@ name = "top"
 min = [0.0, 0.3]
 max = [0.1, 0.34]
 direction = [0, 1]
-)";
+)");
 }
 
 // A tank 30 x 30 cm, l0 = 1 cm: 10 cm of water under air, fed by an inflow buffer at its foot (q = 0.005 m^2/s,
