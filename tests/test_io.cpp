@@ -162,7 +162,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
       "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift,"
-      "vented_in,vented_out",
+      "vented_in,vented_out,shift_cuts",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -179,7 +179,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.dispersed_gas = 11; r.entrained_swaps = 12; r.regularised_rows = 13;
   r.gas_set_dt = 14; r.liquid_dt_steps = 15.25; r.entrained_gas = 16;
   r.gas_correction_capped = 17; r.gas_speed_capped = 18; r.largest_shift = 0.03125;
-  r.vented_in = 21; r.vented_out = 22;
+  r.vented_in = 21; r.vented_out = 22; r.shift_cuts = 23;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -208,6 +208,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(0.03125, rows[0].largest_shift);
   EXPECT_EQ(21, rows[0].vented_in);
   EXPECT_EQ(22, rows[0].vented_out);
+  EXPECT_EQ(23, rows[0].shift_cuts);
   EXPECT_EQ(7, rows[0].collisions);
   EXPECT_EQ(8, rows[0].gradient_fallbacks);
   EXPECT_EQ(9, rows[0].thin_support);

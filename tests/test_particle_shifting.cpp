@@ -2,10 +2,17 @@
 //  * a particle at rest is not shifted, whatever its neighbourhood (the still tanks stay exact);
 //  * on a full lattice nothing is shifted at any speed, and on a free-surface row's (cut) lattice nothing either
 //    once the normal part is removed;
-//  * a particle whose neighbour crowds it from one side moves away from it, by A l0 |u| dt D0/n0 |first moment|.
+//  * a particle whose neighbour crowds it from one side moves away from it, by A l0 |u| dt D0/n0 |first moment|;
+//  * numerics.shift_limit cuts a close pair's shift to its length and counts it.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
+#include "case/case_file.hpp"
+#include "case/scene.hpp"
 #include "mps/particle_shifting.hpp"
+#include "mps/solver.hpp"
 #include "support/shaped_lattice.hpp"
 
 using namespace mistfall;
@@ -59,4 +66,69 @@ TEST(ParticleShifting, MovesAwayFromACrowdingNeighbourByTheFormula) {
   EXPECT_LT(shift.x(), 0.0);
   EXPECT_NEAR(shift.x(), -2.0 * kL0 * 0.3 * 1e-3 * 2.0 / c.n0 * first.x(), 1e-12 * kL0);
   EXPECT_NEAR(shift.y(), 0.0, 1e-15);
+}
+
+namespace {
+
+// Water moving at 5 m/s over a floor (stabilised scheme, l0 = 1 cm), one particle put 0.5 l0 from its neighbour:
+// a close pair in a fast flow. Returns the step's report and how far that particle moved.
+std::pair<StepReport, double> stepWithAClosePair(double shift_limit) {
+  const std::string text = R"(
+[case]
+name = "close_pair"
+dimension = 2
+[domain]
+min = [-0.04, -0.04]
+max = [0.24, 0.24]
+[numerics]
+particle_spacing = 0.01
+scheme = "stabilised"
+pressure_source = "mixed"
+source_relaxation = 0.01
+dt_max = 5e-4
+shift_limit = )" + std::to_string(shift_limit) + R"(
+[output]
+end_time = 1.0
+[[region]]
+name = "water"
+material = "water"
+min = [0.0, 0.0]
+max = [0.2, 0.1]
+velocity = [5.0, 0.0]
+[[region]]
+name = "box"
+material = "wall"
+min = [-0.04, -0.04]
+max = [0.24, 0.0]
+)";
+  const CaseConfig config = parseCase(text, "close_pair.toml");
+  SimulationState<2> state;
+  state.particles = buildParticles<2>(config);
+  auto& p = state.particles;
+  std::size_t moved = p.size(), anchor = p.size();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if ((p.position[i] - Vec<2>(0.105, 0.045)).norm() < 1e-9) anchor = i;
+    if ((p.position[i] - Vec<2>(0.115, 0.045)).norm() < 1e-9) moved = i;
+  }
+  p.position[moved] = p.position[anchor] + Vec<2>(0.005, 0.0);
+  const Vec<2> before = p.position[moved];
+  MpsSolver<2> solver(config, state);
+  const StepReport report = solver.step(1.0);
+  return {report, (state.particles.position[moved] - before).norm()};
+}
+
+}  // namespace
+
+// numerics.shift_limit (a guard): shifts longer than the limit are cut and counted (here 0.29 l0 at most, with a close
+// pair in a fast flow); a limit above the longest shift cuts nothing, and the trajectory is the unlimited one.
+TEST(ParticleShifting, TheShiftLimitCutsTheShiftsAboveItAndCountsThem) {
+  const auto [free_report, free_move] = stepWithAClosePair(0.0);
+  EXPECT_GT(free_report.largest_shift, 0.2);
+  EXPECT_EQ(0u, free_report.shift_cuts);
+  const auto [cut_report, cut_move] = stepWithAClosePair(0.2);
+  EXPECT_GT(cut_report.shift_cuts, 0u);
+  EXPECT_DOUBLE_EQ(free_report.largest_shift, cut_report.largest_shift);  // the shift as computed, before the cut
+  const auto [loose_report, loose_move] = stepWithAClosePair(1.0);
+  EXPECT_EQ(0u, loose_report.shift_cuts);
+  EXPECT_DOUBLE_EQ(free_move, loose_move);
 }

@@ -119,6 +119,9 @@ struct NumericsConfig {
   // A of the particle shifting after the correction (particle_shifting.hpp), delta r = -A l0 |u| dt P grad C: zero at
   // rest; 0 = none
   double particle_shifting = 3.0;
+  // [l0] a guard: a particle shift longer than this is shortened to it (counted: shift_cuts in diagnostics.csv);
+  // 0 = none. The shift's first moment grows as 1/r^2 for a close pair (docs/two-phase.md).
+  double shift_limit = 0.0;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

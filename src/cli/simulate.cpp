@@ -207,6 +207,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.gas_correction_capped = std::exchange(guards.gas_correction_capped, 0);
     row.gas_speed_capped = std::exchange(guards.gas_speed_capped, 0);
     row.largest_shift = std::exchange(guards.largest_shift, 0.0);
+    row.shift_cuts = std::exchange(guards.shift_cuts, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -244,6 +245,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.gas_correction_capped += static_cast<std::int64_t>(last.gas_correction_cuts);
         guards.gas_speed_capped += static_cast<std::int64_t>(last.gas_speed_cuts);
         guards.largest_shift = std::max(guards.largest_shift, last.largest_shift);
+        guards.shift_cuts += static_cast<std::int64_t>(last.shift_cuts);
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

@@ -100,6 +100,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::largest_shift, 6>("largest_shift"),
     column<&DiagnosticsRow::vented_in>("vented_in"),
     column<&DiagnosticsRow::vented_out>("vented_out"),
+    column<&DiagnosticsRow::shift_cuts>("shift_cuts"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

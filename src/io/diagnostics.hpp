@@ -62,6 +62,8 @@ struct DiagnosticsRow {
   // The largest particle shift of a step since the previous row, in l0 (numerics.particle_shifting, stabilised
   // scheme; 0 at rest: it scales with the particle's speed).
   double largest_shift = 0;
+  // Particle shifts shortened to numerics.shift_limit since the previous row (particle-steps; a guard).
+  std::int64_t shift_cuts = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

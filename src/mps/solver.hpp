@@ -80,6 +80,7 @@ struct StepReport {
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
+  std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
 };
 
 template <int D>

@@ -126,13 +126,19 @@ void MpsSolver<D>::shiftParticles(double dt) {
     if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
     shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum);
   }
+  // numerics.shift_limit (a guard, counted): a shift longer than limit l0 is shortened to it.
+  const double limit = config_.numerics.shift_limit * constants_.l0;
   double largest = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : largest)
+  std::size_t cuts = 0;
+#pragma omp parallel for schedule(static) reduction(max : largest) reduction(+ : cuts)
   for (std::int64_t i = 0; i < n; ++i) {
+    const double length = shift[i].norm();
+    largest = std::max(largest, length);
+    if (limit > 0.0 && length > limit) shift[i] *= limit / length, ++cuts;
     p.position[i] += shift[i];
-    largest = std::max(largest, shift[i].norm());
   }
   report_.largest_shift = largest / constants_.l0;
+  report_.shift_cuts = cuts;
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                         \
