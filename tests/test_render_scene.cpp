@@ -177,3 +177,18 @@ max = [1.1, 0.0, 1.0]
   ASSERT_EQ(s.content.droplets.size(), 1u);
   EXPECT_DOUBLE_EQ(s.content.droplets[0].z(), 0.9);
 }
+
+// cases/waterfall_small.toml's vents: the cavity's, cut through the visible back wall, is drawn as that wall; the
+// roof's, cut through the hidden lid, is not.
+TEST(RenderScene, AVentIsDrawnAsTheWallItWasCutFromUnlessThatWallIsHidden) {
+  const CaseConfig c = loadCaseFile(std::string(MISTFALL_SOURCE_DIR) + "/cases/waterfall_small.toml");
+  ASSERT_EQ(c.vents.size(), 2u);
+  Particles<2> p;
+  p.add(Vec<2>(0.5, 0.05), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+  const FrameScene s = frameScene<2>(p, {1}, c, nullptr);
+  const auto& names = s.content.wall_names;
+  EXPECT_NE(std::find(names.begin(), names.end(), "cavity"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "roof"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "back_upper"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "lid"), names.end());
+}
