@@ -154,20 +154,11 @@ Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t i) const {
   forEachPairWithin<D>(i, p.position, near_neighbours_, re, inMinimum, [&](std::int32_t j, const Vec<D>&, double, double) {
     liquid = liquid || (!isMirroredWall(p.kind[j]) && p.phase[j] == Phase::Liquid);
   });
-  if (!liquid)
-    return correctedGradientAt<D>(i, p.position, near_neighbours_, constants_,
-                                  config_.numerics.gradient_correction_min_determinant, inMinimum, difference)
-        .value;
-  double hat = 0.0;
-  Vec<D> sum = Vec<D>::Zero(), first = Vec<D>::Zero();
-  forEachPairWithin<D>(i, p.position, near_neighbours_, re, inMinimum,
-                       [&](std::int32_t j, const Vec<D>& rij, double r2, double w) {
-                         const double d = difference(j, rij);
-                         hat = std::min(hat, d);
-                         sum += rij * (d * w / r2);
-                         first += rij * (w / r2);
-                       });
-  return (sum - hat * first) * (double(D) / constants_.n0);
+  // Next to the liquid the standard form: the corrected gradient's own fallback (a determinant no moment reaches).
+  const double min_determinant =
+      liquid ? std::numeric_limits<double>::infinity() : config_.numerics.gradient_correction_min_determinant;
+  return correctedGradientAt<D>(i, p.position, near_neighbours_, constants_, min_determinant, inMinimum, difference)
+      .value;
 }
 
 // Correction of the gas with the gas system's pressures (the liquid is not moved by it).
