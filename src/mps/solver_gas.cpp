@@ -17,12 +17,6 @@
 
 namespace mistfall {
 
-// The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
-// particle within re of gas (at the liquid's corrected positions). n* counts every particle. With
-// numerics.gas_domain = "open" the gas has free-surface particles (p = 0) and open gas pressures are clamped at 0;
-// with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
-// pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
-// P_B comes from the liquid system).
 // numerics.gas_operators = "stabilised": the liquid that is a wall of the gas system (not gas of any kind), mirrored
 // like the walls: seen from gas particle i it holds p_i + rho_g g . r_ij, and its velocity enters the divergence.
 template <int D>
@@ -31,6 +25,12 @@ bool MpsSolver<D>::mirroredLiquid(std::size_t j) const {
   return p.phase[j] == Phase::Liquid && !isMirroredWall(p.kind[j]) && isActive(p.kind[j]);
 }
 
+// The gas system, eq. (17) with the gas's sound speed: every gas particle, and as its walls every wall or liquid
+// particle within re of gas (at the liquid's corrected positions). n* counts every particle. With
+// numerics.gas_domain = "open" the gas has free-surface particles (p = 0) and open gas pressures are clamped at 0;
+// with "closed" every particle of the system is an unknown and may be below the ambient. In both, a bubble's
+// pressures are kept as solved, since only their gradient is used (to re-space its gas; the bubble's own pressure
+// P_B comes from the liquid system).
 template <int D>
 void MpsSolver<D>::solveGasPressure(double dt) {
   auto& p = state_.particles;
@@ -54,13 +54,13 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   problem_.sound_speed.assign(n, gas.sound_speed);
   const bool closed = config_.numerics.gas_domain == GasDomain::Closed;
   const bool mirrored = config_.numerics.gas_stabilised;  // walls and liquid mirrored (wall_mirror.hpp)
-  auto liquidWall = [&](std::int64_t j) { return mirroredLiquid(static_cast<std::size_t>(j)); };
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
-    if (mirrored && (isMirroredWall(p.kind[i]) || liquidWall(i))) problem_.takes_part[i] = 0;  // known part below
+    if (mirrored && (isMirroredWall(p.kind[i]) || mirroredLiquid(i))) problem_.takes_part[i] = 0;  // known part below
     problem_.unknown[i] = problem_.takes_part[i] &&
                           (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
-    problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));  // the liquid's counts
+    // (mirrored walls' rest enters through mirroredWallTerm below; the liquid's velocity stays in the divergence)
+    problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure
     // level is undetermined. Only its gradient re-spaces the gas (the bubble's pressure is the liquid system's
     // P_B), so a (nearly) incompressible gas gets a regularising sound speed of numerics.bubble_regularisation
@@ -152,7 +152,7 @@ Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t i) const {
   const double re = constants_.re_number_density;
   bool liquid = false;
   forEachPairWithin<D>(i, p.position, near_neighbours_, re, inMinimum, [&](std::int32_t j, const Vec<D>&, double, double) {
-    liquid = liquid || (!isMirroredWall(p.kind[j]) && p.phase[j] == Phase::Liquid);
+    liquid = liquid || mirroredLiquid(j);
   });
   // Next to the liquid the standard form: the corrected gradient's own fallback (a determinant no moment reaches).
   const double min_determinant =
