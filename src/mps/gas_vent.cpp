@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "case/scene.hpp"
+#include "mps/open_boundaries.hpp"
 
 namespace mistfall {
 
@@ -52,13 +53,6 @@ struct Columns {
     return x;
   }
 };
-
-template <int D>
-bool insideBox(const Vec<D>& x, const Box& b) {
-  for (int k = 0; k < D; ++k)
-    if (x[k] < b.min[k] || x[k] >= b.max[k]) return false;
-  return true;
-}
 
 }  // namespace
 

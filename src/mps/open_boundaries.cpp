@@ -10,13 +10,6 @@ namespace mistfall {
 
 namespace {
 
-template <int D>
-bool insideBox(const Vec<D>& x, const Box& b) {
-  for (int k = 0; k < D; ++k)
-    if (x[k] < b.min[k] || x[k] >= b.max[k]) return false;
-  return true;
-}
-
 // Lattice points of the box across the flow (all axes but the flow's), as positions with the flow coordinate 0.
 template <int D>
 std::vector<Vec<D>> crossSection(const CaseConfig& c, const Inflow& in) {

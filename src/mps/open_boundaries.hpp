@@ -17,6 +17,14 @@
 
 namespace mistfall {
 
+// Whether x lies in the box [min, max) on each of the first D axes.
+template <int D>
+bool insideBox(const Vec<D>& x, const Box& b) {
+  for (int k = 0; k < D; ++k)
+    if (x[k] < b.min[k] || x[k] >= b.max[k]) return false;
+  return true;
+}
+
 // Moves every inflow buffer's particles by dt, releases those past the downstream face and creates the layers
 // that fit. Returns the number of particles created.
 template <int D>
