@@ -1,6 +1,7 @@
 #include "mps/gas_vent.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
