@@ -152,6 +152,12 @@ class MpsSolver {
   void correctGas(double dt);
   Vec<D> stabilisedGasGradient(std::size_t i) const;
   bool mirroredLiquid(std::size_t j) const;
+  // Gas of a vent at the step's start (gas_vent.hpp): a Dirichlet particle at the ambient pressure.
+  bool isVentGas(std::size_t i) const {
+    const auto& p = state_.particles;
+    return i < vent_at_start_.size() && vent_at_start_[i] >= 0 && p.kind[i] == ParticleKind::Fluid &&
+           p.phase[i] == Phase::Gas;
+  }
   void moveBubbleGas(double dt);
   void riseEntrainedGas(double dt);
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.

@@ -74,9 +74,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   }
   // The vents' gas holds the ambient pressure rho_g g.x (gas_vent.hpp): a Dirichlet boundary of the system.
   problem_.boundary_value.clear();
-  auto vented = [&](std::int64_t i) {
-    return static_cast<std::size_t>(i) < vent_at_start_.size() && vent_at_start_[i] >= 0 && roles_.open_gas[i];
-  };
+  auto vented = [&](std::int64_t i) { return isVentGas(static_cast<std::size_t>(i)) && roles_.open_gas[i]; };
   if (!vent_at_start_.empty()) {
     problem_.boundary_value.assign(n, 0.0);
     for (std::int64_t i = 0; i < n; ++i)

@@ -48,10 +48,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
                          [&](std::int32_t, const Vec<D>&, double, double) { any = true; });
     return any;
   };
-  auto vented = [&](std::int64_t i) {
-    return static_cast<std::size_t>(i) < vent_at_start_.size() && vent_at_start_[i] >= 0 &&
-           p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas;
-  };
+  auto vented = [&](std::int64_t i) { return isVentGas(static_cast<std::size_t>(i)); };
   // Who takes part: every fluid particle; walls are mirrored (no unknown). Densities, sound speeds, phi.
   problem_.takes_part.assign(n, 0);
   problem_.unknown.assign(n, 0);

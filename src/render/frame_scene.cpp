@@ -145,16 +145,19 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
   auto hidden = [&](const std::string& name) {
     return std::find(r.hidden_regions.begin(), r.hidden_regions.end(), name) != r.hidden_regions.end();
   };
-  for (const Region& region : config.regions) {
-    if (region.material != Material::Wall || region.shape != RegionShape::Box) continue;
-    if (hidden(region.name)) continue;
-    Box b = region.box;
+  // A wall box, extruded across a 2D case, unless it stands on the camera's line of sight.
+  auto drawWall = [&](Box b, const std::string& name) {
     if (D == 2) b.min[2] = -0.5 * r.extrusion_width, b.max[2] = 0.5 * r.extrusion_width;
     Box drawn = b;  // natural style, 2D: the rock is widened across the fall by bank_width
     if (D == 2 && r.style == RenderStyle::Natural) drawn.min[2] -= r.bank_width, drawn.max[2] += r.bank_width;
-    if (segmentHitsBox(r.camera_location, r.camera_look_at, drawn)) continue;
+    if (segmentHitsBox(r.camera_location, r.camera_look_at, drawn)) return;
     c.walls.push_back(b);
-    c.wall_names.push_back(region.name);
+    c.wall_names.push_back(name);
+  };
+  for (const Region& region : config.regions) {
+    if (region.material != Material::Wall || region.shape != RegionShape::Box) continue;
+    if (hidden(region.name)) continue;
+    drawWall(region.box, region.name);
   }
   // A vent (mps/gas_vent.hpp) is a 2D case's stand-in for a flume's vent pipes through its side walls: it is drawn as
   // the wall it was cut from, unless it touches a hidden wall region (a vent in a hidden lid stays open).
@@ -168,14 +171,7 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
     for (const Region& region : config.regions)
       in_hidden_wall = in_hidden_wall || (region.material == Material::Wall && hidden(region.name) &&
                                           touches(region.box, vent.box));
-    if (in_hidden_wall) continue;
-    Box b = vent.box;
-    if (D == 2) b.min[2] = -0.5 * r.extrusion_width, b.max[2] = 0.5 * r.extrusion_width;
-    Box drawn = b;
-    if (D == 2 && r.style == RenderStyle::Natural) drawn.min[2] -= r.bank_width, drawn.max[2] += r.bank_width;
-    if (segmentHitsBox(r.camera_location, r.camera_look_at, drawn)) continue;
-    c.walls.push_back(b);
-    c.wall_names.push_back(vent.name);
+    if (!in_hidden_wall) drawWall(vent.box, vent.name);
   }
   if (texture)
     for (std::size_t i = 0; i < texture->position.size(); ++i) {
