@@ -7,7 +7,10 @@
 //    Dirichlet boundary of the gas system (solver_gas.cpp) on the vent's gas particles;
 //  * the velocity is extrapolated with zero normal gradient: each lattice column of the vent (its particles nearest
 //    one lattice line along n) moves as one, along n, at the mean normal velocity u_n of the domain's gas within
-//    2 l0 in front of the vent's inner face (0 where there is none);
+//    2 l0 in front of the vent's inner face (0 where there is none); and the vent's gas takes no part in the
+//    divergence of its neighbours (each sees it moving as itself), so the vent cannot draw the air it follows
+//    (with the columns' velocities in that divergence, a column and the air in front of it fed on each other at a
+//    vent's edges: tests/test_gas_vent.cpp, docs/waterfall.md);
 //  * gas that passes the outer face leaves the domain (removed, counted); where a column has moved inward so far
 //    that one more lattice layer fits between its outermost particle and the outer face, that layer is created
 //    with the column's velocity (as an inflow buffer creates its layers, open_boundaries.hpp).
