@@ -47,59 +47,78 @@ std::int64_t NeighborSearch<D>::cellIndex(const Eigen::Matrix<std::int64_t, D, 1
 }
 
 template <int D>
+void NeighborSearch<D>::binParticles() {
+  const std::int64_t n = static_cast<std::int64_t>(particle_cell_.size());
+  std::int64_t ncells = 1;
+  for (int k = 0; k < D; ++k) ncells *= cells_[k];
+  cell_start_.assign(ncells + 1, 0);
+  for (std::int64_t i = 0; i < n; ++i)
+    if (particle_cell_[i] >= 0) ++cell_start_[particle_cell_[i] + 1];
+  for (std::int64_t c = 0; c < ncells; ++c) cell_start_[c + 1] += cell_start_[c];
+  sorted_.resize(cell_start_[ncells]);
+  std::vector<std::int64_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::int64_t i = 0; i < n; ++i)
+    if (particle_cell_[i] >= 0) sorted_[fill[particle_cell_[i]]++] = static_cast<std::int32_t>(i);
+}
+
+template <int D>
+template <class Visit>
+void NeighborSearch<D>::forEachCandidate(const Vec<D>& x, Visit&& visit) const {
+  const auto c = cellOf(x);
+  Eigen::Matrix<std::int64_t, D, 1> lo, hi;
+  for (int k = 0; k < D; ++k) {
+    lo[k] = std::max<std::int64_t>(c[k] - kCellsPerReach, 0);
+    hi[k] = std::min<std::int64_t>(c[k] + kCellsPerReach, cells_[k] - 1);
+  }
+  // The cells of one row along the first axis are consecutive, so each row is one run of `sorted_`.
+  const std::int64_t row_cells = hi[0] - lo[0];
+  Eigen::Matrix<std::int64_t, D, 1> cc = lo;
+  while (true) {
+    const std::int64_t first_cell = cellIndex(cc);
+    for (std::int64_t s = cell_start_[first_cell]; s < cell_start_[first_cell + row_cells + 1]; ++s) visit(sorted_[s]);
+    int k = 1;
+    for (; k < D; ++k) {
+      if (++cc[k] <= hi[k]) break;
+      cc[k] = lo[k];
+    }
+    if (k == D) break;
+  }
+}
+
+template <int D>
+void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                              const std::vector<std::uint64_t>& id, NeighborList& out) {
+  build(position, kind, out);
+  built_id_ = id;
+  built_next_id_ = 0;
+  for (const std::uint64_t i : id) built_next_id_ = std::max(built_next_id_, i + 1);
+}
+
+template <int D>
 void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
                               NeighborList& out) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
-  std::int64_t ncells = 1;
-  for (int k = 0; k < D; ++k) ncells *= cells_[k];
   ++builds_;
+  built_id_.clear();
 
   // Counting sort of particles into cells (each cell's particles in ascending index order).
   particle_cell_.resize(n);
-  cell_start_.assign(ncells + 1, 0);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     particle_cell_[i] = -1;
     if (!std::isfinite(position[i].squaredNorm())) continue;
     if (isActive(kind[i])) particle_cell_[i] = cellIndex(cellOf(position[i]));
   }
-  for (std::int64_t i = 0; i < n; ++i)
-    if (particle_cell_[i] >= 0) ++cell_start_[particle_cell_[i] + 1];
-  for (std::int64_t c = 0; c < ncells; ++c) cell_start_[c + 1] += cell_start_[c];
-  sorted_.resize(cell_start_[ncells]);
-  {
-    std::vector<std::int64_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::int64_t i = 0; i < n; ++i)
-      if (particle_cell_[i] >= 0) sorted_[fill[particle_cell_[i]]++] = static_cast<std::int32_t>(i);
-  }
+  binParticles();
 
   const double reach = radius_ + skin_;
   const double r2 = reach * reach;
   // Appends every j within the reach of particle i to `list`.
   auto gather = [&](std::int64_t i, std::vector<std::int32_t>& list) {
-    const auto c = cellOf(position[i]);
-    Eigen::Matrix<std::int64_t, D, 1> lo, hi;
-    for (int k = 0; k < D; ++k) {
-      lo[k] = std::max<std::int64_t>(c[k] - kCellsPerReach, 0);
-      hi[k] = std::min<std::int64_t>(c[k] + kCellsPerReach, cells_[k] - 1);
-    }
     const Vec<D> xi = position[i];
-    // The cells of one row along the first axis are consecutive, so each row is one run of `sorted_`.
-    const std::int64_t row_cells = hi[0] - lo[0];
-    Eigen::Matrix<std::int64_t, D, 1> cc = lo;
-    while (true) {
-      const std::int64_t first_cell = cellIndex(cc);
-      for (std::int64_t s = cell_start_[first_cell]; s < cell_start_[first_cell + row_cells + 1]; ++s) {
-        const std::int32_t j = sorted_[s];
-        if (j != i && (position[j] - xi).squaredNorm() < r2) list.push_back(j);
-      }
-      int k = 1;
-      for (; k < D; ++k) {
-        if (++cc[k] <= hi[k]) break;
-        cc[k] = lo[k];
-      }
-      if (k == D) break;
-    }
+    forEachCandidate(xi, [&](std::int32_t j) {
+      if (j != i && (position[j] - xi).squaredNorm() < r2) list.push_back(j);
+    });
   };
 
   // One pass: each thread gathers the lists of a contiguous block of particles into its own buffer (each list
@@ -151,6 +170,100 @@ bool NeighborSearch<D>::covers(const std::vector<Vec<D>>& position, const std::v
     ok = ok && listed == active && (!active || (position[i] - built_position_[i]).squaredNorm() <= limit2);
   }
   return ok;
+}
+
+template <int D>
+bool NeighborSearch<D>::carryOver(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                                  const std::vector<std::uint64_t>& id, NeighborList& out) {
+  const std::int64_t n = static_cast<std::int64_t>(position.size());
+  const std::int64_t built = static_cast<std::int64_t>(built_id_.size());
+  if (builds_ == 0 || built == 0 || static_cast<std::int64_t>(id.size()) != n ||
+      static_cast<std::int64_t>(out.particleCount()) != built)
+    return false;
+  // The survivors first, in the build's order, then the particles made since (ids from built_next_id_ on).
+  std::int64_t survivors = 0;
+  while (survivors < n && id[survivors] < built_next_id_) ++survivors;
+  for (std::int64_t i = survivors; i < n; ++i)
+    if (id[i] < built_next_id_) return false;
+  if (survivors == built && n == built) return false;  // nothing removed or made: covers() decides
+  std::vector<std::int32_t> new_of(built, -1), old_of(survivors, -1);
+  for (std::int64_t i = 0, o = 0; i < survivors; ++i, ++o) {
+    while (o < built && built_id_[o] != id[i]) ++o;
+    if (o == built) return false;
+    new_of[o] = static_cast<std::int32_t>(i);
+    old_of[i] = static_cast<std::int32_t>(o);
+  }
+  // The survivors as covers() wants them; the new particles active where they are.
+  const double limit = 0.5 * skin_ * (1.0 - 1e-9);
+  bool ok = true;
+#pragma omp parallel for schedule(static) reduction(&& : ok)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const bool active = isActive(kind[i]) && std::isfinite(position[i].squaredNorm());
+    if (i >= survivors) {
+      ok = ok && active;
+      continue;
+    }
+    const auto o = old_of[i];
+    ok = ok && (particle_cell_[o] >= 0) == active &&
+         (!active || (position[i] - built_position_[o]).squaredNorm() <= limit * limit);
+  }
+  if (!ok) return false;
+
+  // The new particles' pairs: the survivors (at their build positions, found through the build's cells) and each
+  // other, within the reach of where they are now.
+  const double reach2 = (radius_ + skin_) * (radius_ + skin_);
+  std::vector<std::vector<std::int32_t>> made(n - survivors);
+  std::vector<std::vector<std::int32_t>> extra(survivors);  // new particles to append to a survivor's list
+  for (std::int64_t k = survivors; k < n; ++k) {
+    auto& list = made[k - survivors];
+    forEachCandidate(position[k], [&](std::int32_t o) {
+      if (new_of[o] >= 0 && (built_position_[o] - position[k]).squaredNorm() < reach2) list.push_back(new_of[o]);
+    });
+    std::sort(list.begin(), list.end());
+    for (const std::int32_t i : list) extra[i].push_back(static_cast<std::int32_t>(k));
+    for (std::int64_t m = survivors; m < n; ++m)
+      if (m != k && (position[m] - position[k]).squaredNorm() < reach2) list.push_back(static_cast<std::int32_t>(m));
+  }
+  // The new list: each survivor's old pairs renumbered (in order: the renumbering keeps it), then the new particles.
+  NeighborList next;
+  next.offsets.assign(n + 1, 0);
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::int64_t count = 0;
+    if (i < survivors) {
+      for (auto s = out.begin(old_of[i]); s < out.end(old_of[i]); ++s) count += new_of[out.indices[s]] >= 0;
+      count += static_cast<std::int64_t>(extra[i].size());
+    } else {
+      count = static_cast<std::int64_t>(made[i - survivors].size());
+    }
+    next.offsets[i + 1] = next.offsets[i] + count;
+  }
+  next.indices.resize(static_cast<std::size_t>(next.offsets[n]));
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    auto at = next.indices.begin() + next.offsets[i];
+    if (i < survivors) {
+      for (auto s = out.begin(old_of[i]); s < out.end(old_of[i]); ++s)
+        if (new_of[out.indices[s]] >= 0) *at++ = new_of[out.indices[s]];
+      at = std::copy(extra[i].begin(), extra[i].end(), at);
+    } else {
+      std::copy(made[i - survivors].begin(), made[i - survivors].end(), at);
+    }
+  }
+  out = std::move(next);
+  // The build's record, renumbered: survivors keep their build positions, the new particles take theirs now.
+  std::vector<Vec<D>> built_position(n);
+  std::vector<std::int64_t> particle_cell(n);
+  for (std::int64_t i = 0; i < n; ++i) {
+    built_position[i] = i < survivors ? built_position_[old_of[i]] : position[i];
+    particle_cell[i] = i < survivors ? particle_cell_[old_of[i]] : cellIndex(cellOf(position[i]));
+  }
+  built_position_ = std::move(built_position);
+  particle_cell_ = std::move(particle_cell);
+  binParticles();
+  built_id_ = id;
+  for (std::int64_t k = survivors; k < n; ++k) built_next_id_ = std::max(built_next_id_, id[k] + 1);
+  ++builds_;
+  return true;
 }
 
 template <int D>

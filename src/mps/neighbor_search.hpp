@@ -35,10 +35,24 @@ class NeighborSearch {
 
   // Rebuilds the cells and the neighbour list for the given positions (and remembers them, for covers()).
   void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind, NeighborList& out);
+  // The same, remembering the particles' ids (for carryOver).
+  void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+             const std::vector<std::uint64_t>& id, NeighborList& out);
 
   // Whether the last list built still holds every pair within radius() at these positions: the same particles,
   // the same of them active, none moved more than skin / 2 since the build (with skin 0: none moved at all).
   bool covers(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind) const;
+  // Carries the last list over particles removed and made since it was built (an outflow's, a vent's, an inflow's),
+  // instead of a new build: possible when the particles are the build's survivors in their order (Particles::erase
+  // keeps it), none moved more than skin / 2, then the new ones (Particles::add: larger ids, appended). The survivors'
+  // lists are renumbered; a new particle's pairs are those within the reach of its position now, which counts as its
+  // build position. The list then holds every pair within radius() as a new build would, each particle's in
+  // ascending order, so every operator gives the same bits with it. Returns false, changing nothing, otherwise.
+  bool carryOver(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                 const std::vector<std::uint64_t>& id, NeighborList& out);
+  // Each particle's position at the build (or, for one made since, at the carry-over that listed it): the positions
+  // a list filtered for a smaller reach must be filtered at (filterNeighbours).
+  const std::vector<Vec<D>>& builtPositions() const { return built_position_; }
 
   double radius() const { return radius_; }
   double skin() const { return skin_; }
@@ -51,6 +65,11 @@ class NeighborSearch {
 
  private:
   std::int64_t cellIndex(const Eigen::Matrix<std::int64_t, D, 1>& c) const;
+  // Bins the listed particles (particle_cell_ >= 0) into cell_start_ / sorted_, each cell in ascending index order.
+  void binParticles();
+  // Calls visit(j) for every binned particle j in the cells within one reach of x's cell.
+  template <class Visit>
+  void forEachCandidate(const Vec<D>& x, Visit&& visit) const;
   Eigen::Matrix<std::int64_t, D, 1> cellOf(const Vec<D>& x) const;
 
   Vec<D> lower_;
@@ -63,6 +82,8 @@ class NeighborSearch {
   std::vector<std::int64_t> particle_cell_;  // cell of each particle, -1 when ignored
   std::vector<std::vector<std::int32_t>> thread_lists_;  // per thread: the lists of its block of particles
   std::vector<Vec<D>> built_position_;       // positions at the last build
+  std::vector<std::uint64_t> built_id_;      // ids at the last build (empty: not known, no carry-over)
+  std::uint64_t built_next_id_ = 0;          // above every id of the last build
   std::int64_t builds_ = 0;
 };
 

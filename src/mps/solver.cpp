@@ -328,9 +328,12 @@ template <int D>
 void MpsSolver<D>::buildNeighbours() {
   auto t = timer_.scope(Stage::Neighbours);
   const auto& p = state_.particles;
-  if (!search_.covers(p.position, p.kind)) search_.build(p.position, p.kind, neighbours_);
+  // A list is made anew only when the last one no longer covers the particles and cannot be carried over the
+  // particles an open boundary removed or made since (neighbor_search.hpp).
+  if (!search_.covers(p.position, p.kind) && !search_.carryOver(p.position, p.kind, p.id, neighbours_))
+    search_.build(p.position, p.kind, p.id, neighbours_);
   if (near_built_ != search_.builds()) {
-    filterNeighbours<D>(p.position, neighbours_, near_reach_ + search_.skin(), near_neighbours_);
+    filterNeighbours<D>(search_.builtPositions(), neighbours_, near_reach_ + search_.skin(), near_neighbours_);
     near_built_ = search_.builds();
   }
 }
@@ -491,7 +494,7 @@ void MpsSolver<D>::sortParticlesBySpace() {
   std::vector<std::int64_t> key(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) key[i] = search_.cellKey(p.position[i]);
   p.reorder(orderByKey(key));
-  search_.build(p.position, p.kind, neighbours_);
+  search_.build(p.position, p.kind, p.id, neighbours_);
   reorder_pending_ = false;
 }
 
