@@ -41,6 +41,27 @@ direction = [0, 1]
 )");
 }
 
+// A lid from x = 0 to `end` over y 0.3-0.34, cut by a vent (outward +y) between `vent_from` and `vent_to`.
+std::string ventedLid(const std::string& vent_from, const std::string& vent_to, const std::string& end) {
+  return R"(
+[[region]]
+name = "lid_left"
+material = "wall"
+min = [0.0, 0.3]
+max = [)" + vent_from + R"(, 0.34]
+[[region]]
+name = "lid_right"
+material = "wall"
+min = [)" + vent_to + R"(, 0.3]
+max = [)" + end + R"(, 0.34]
+[[vent]]
+name = "top"
+min = [)" + vent_from + R"(, 0.3]
+max = [)" + vent_to + R"(, 0.34]
+direction = [0, 1]
+)";
+}
+
 // A tank 30 x 30 cm, l0 = 1 cm: 10 cm of water under air, fed by an inflow buffer at its foot (q = 0.005 m^2/s,
 // U = 0.1 m/s; `discharge` 0: none); the lid either sealed or with a vent in its middle third. The two-systems
 // coupling with the waterfall's gas keys, or the one equation.
@@ -55,23 +76,7 @@ entrained_gas_rise_speed = 0.23
 dispersed_gas_fraction = 0.5
 dispersed_gas_touch = 1.5
 )";
-  std::string lid = vented ? R"(
-[[region]]
-name = "lid_left"
-material = "wall"
-min = [0.0, 0.3]
-max = [0.1, 0.34]
-[[region]]
-name = "lid_right"
-material = "wall"
-min = [0.2, 0.3]
-max = [0.3, 0.34]
-[[vent]]
-name = "top"
-min = [0.1, 0.3]
-max = [0.2, 0.34]
-direction = [0, 1]
-)"
+  std::string lid = vented ? ventedLid("0.1", "0.2", "0.3")
                            : R"(
 [[region]]
 name = "lid"
@@ -234,22 +239,7 @@ name = "bottom"
 min = [0.0, -0.04]
 max = [0.1, 0.0]
 direction = [0, -1]
-[[region]]
-name = "lid_left"
-material = "wall"
-min = [0.0, 0.3]
-max = [0.03, 0.34]
-[[region]]
-name = "lid_right"
-material = "wall"
-min = [0.07, 0.3]
-max = [0.1, 0.34]
-[[vent]]
-name = "top"
-min = [0.03, 0.3]
-max = [0.07, 0.34]
-direction = [0, 1]
-)");
+)" + ventedLid("0.03", "0.07", "0.1"));
 }
 
 // The stabilised gas operators: the paper's let still air drift (0.047 m/s in 0.3 s, test_gas_operators.cpp), and
