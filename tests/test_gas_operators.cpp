@@ -17,18 +17,7 @@ namespace {
 // A sealed box of air 10 cm wide and 30 cm high, l0 = 1 cm, at rest; a puddle in a cup beside it (the case needs
 // water) takes no part.
 std::string airColumn(const std::string& operators) {
-  return test_support::airColumnCase("gas_operators = \"" + operators + "\"\n", 0.0, R"(
-[[region]]
-name = "floor"
-material = "wall"
-min = [0.0, -0.04]
-max = [0.1, 0.0]
-[[region]]
-name = "lid"
-material = "wall"
-min = [0.0, 0.3]
-max = [0.1, 0.34]
-)");
+  return test_support::airColumnCase("gas_operators = \"" + operators + "\"\n", 0.0, test_support::sealedEnds());
 }
 
 // The fastest air particle after `seconds`.

@@ -142,7 +142,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators"});
+                "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -186,6 +186,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
   if (int s = rd.choice(nm, np, "gas_operators", {"paper", "stabilised"}); s >= 0) n.gas_stabilised = s == 1;
+  if (int s = rd.choice(nm, np, "vent_outlet", {"buffer", "zero_gradient"}); s >= 0) n.vent_zero_gradient = s == 1;
   if (n.gas_stabilised && n.pressure_source != PressureSource::Mixed)
     rd.fail("numerics.gas_operators = \"stabilised\" needs numerics.pressure_source = \"mixed\" (the walls act through the "
             "velocity-divergence source; docs/case-file.md)");

@@ -22,6 +22,7 @@
 #include "cli/texture_frames.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bubble_log.hpp"
+#include "io/vent_log.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/errors.hpp"
@@ -42,6 +43,7 @@ constexpr const char* kCheckpoint = "checkpoint.bin";
 constexpr const char* kDiagnostics = "diagnostics.csv";
 constexpr const char* kCollection = "frames.pvd";
 constexpr const char* kBubbles = "bubbles.csv";
+constexpr const char* kVents = "vents.csv";  // a case with vents
 constexpr const char* kDiverged = "diverged.txt";  // written when the run diverges
 
 constexpr const char* kTexture = "texture";      // texture.inline = true: the texture stage's files
@@ -158,6 +160,15 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   }
   DiagnosticsWriter diagnostics(dir / kDiagnostics, resume_time);
   BubbleLog bubble_log(dir / kBubbles, resume_time);
+  // vents.csv: each vent's exchange since the last output (a case with vents only).
+  std::optional<VentLog> vent_log;
+  std::vector<std::int64_t> vent_in(config.vents.size(), 0), vent_out(config.vents.size(), 0);
+  double vent_since = state.time;  // the last output's time
+  if (!config.vents.empty()) {
+    std::vector<std::string> names;
+    for (const auto& v : config.vents) names.push_back(v.name);
+    vent_log.emplace(dir / kVents, names, std::pow(config.numerics.particle_spacing, D), resume_time);
+  }
   // texture.inline: the texture of every frame from the in-memory particles, categories and grid; a resumed run
   // first rebuilds the cloud from the saved frames up to the checkpoint (the post-process path, same values).
   std::optional<TextureWriter> texture;
@@ -215,6 +226,12 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     diagnostics.append(row);
     previous = row;
     bubble_log.append(state.time, bubbles);
+    if (vent_log) {
+      vent_log->append(state.time, state.time - vent_since, vent_in, vent_out);
+      std::fill(vent_in.begin(), vent_in.end(), 0);
+      std::fill(vent_out.begin(), vent_out.end(), 0);
+      vent_since = state.time;
+    }
     state.next_frame += 1;
     writeCheckpoint<D>(dir / kCheckpoint, state, fingerprint);
     solver.stageTimer() = solver_stages;
@@ -246,6 +263,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.gas_speed_capped += static_cast<std::int64_t>(last.gas_speed_cuts);
         guards.largest_shift = std::max(guards.largest_shift, last.largest_shift);
         guards.shift_cuts += static_cast<std::int64_t>(last.shift_cuts);
+        for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
+          vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

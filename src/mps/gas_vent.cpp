@@ -77,6 +77,8 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
                              const std::vector<Vec<D>>& start, double dt, double gas_density, const Vec<D>& gravity) {
   VentExchange exchange;
   if (c.vents.empty()) return exchange;
+  exchange.gas_in_by_vent.assign(c.vents.size(), 0);
+  exchange.gas_out_by_vent.assign(c.vents.size(), 0);
   const double l0 = c.numerics.particle_spacing;
   const std::size_t n = start_vent.size();  // the particles that existed at the step's start
   std::vector<char> remove(p.size(), 0);
@@ -123,6 +125,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
         if (i >= n || start_vent[i] != static_cast<int>(v)) continue;  // only a vent's own particles leave by it
         remove[i] = 1;
         ++(p.phase[i] == Phase::Gas ? exchange.gas_out : exchange.liquid_out);
+        if (p.phase[i] == Phase::Gas) ++exchange.gas_out_by_vent[v];
       } else {
         outermost[col] = std::max(outermost[col], xi);
       }
@@ -133,6 +136,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
       double xi = std::isfinite(outermost[k]) ? outermost[k] : cols.inner - 0.5 * l0;
       for (xi += l0; xi < cols.outer; xi += l0) {
         created_at.push_back(cols.point(k, xi, vent, l0));
+        ++exchange.gas_in_by_vent[v];
         Vec<D> u = Vec<D>::Zero();
         u[a] = vent.sign * un[k];
         created_velocity.push_back(u);

@@ -7,10 +7,11 @@
 //    Dirichlet boundary of the gas system (solver_gas.cpp) on the vent's gas particles;
 //  * the velocity is extrapolated with zero normal gradient: each lattice column of the vent (its particles nearest
 //    one lattice line along n) moves as one, along n, at the mean normal velocity u_n of the domain's gas within
-//    2 l0 in front of the vent's inner face (0 where there is none); and the vent's gas takes no part in the
-//    divergence of its neighbours (each sees it moving as itself), so the vent cannot draw the air it follows
-//    (with the columns' velocities in that divergence, a column and the air in front of it fed on each other at a
-//    vent's edges: tests/test_gas_vent.cpp, docs/waterfall.md);
+//    2 l0 in front of the vent's inner face (0 where there is none); in its neighbours' divergence the vent's gas
+//    counts with that velocity (numerics.vent_outlet = "buffer", Tafuni's buffer), or not at all ("zero_gradient":
+//    each neighbour sees it moving as itself, so a column cannot draw the air it follows; with the columns'
+//    velocities in that divergence, a column and the air in front of it fed on each other at a vent's edges on the
+//    stabilised gas operators: tests/test_gas_vent.cpp, docs/waterfall.md);
 //  * gas that passes the outer face leaves the domain (removed, counted); where a column has moved inward so far
 //    that one more lattice layer fits between its outermost particle and the outer face, that layer is created
 //    with the column's velocity (as an inflow buffer creates its layers, open_boundaries.hpp).
@@ -42,6 +43,7 @@ struct VentExchange {
   std::int64_t gas_in = 0;      // gas created at outer faces
   std::int64_t gas_out = 0;     // gas removed past outer faces
   std::int64_t liquid_out = 0;  // liquid removed past outer faces
+  std::vector<std::int64_t> gas_in_by_vent, gas_out_by_vent;  // the same per vent, in the case's order
 };
 
 // Drives the vents' gas over the step: `start` holds, for each particle with start_vent[i] >= 0 (its vent at the

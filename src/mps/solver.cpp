@@ -208,6 +208,8 @@ const StepReport& MpsSolver<D>::step(double until) {
                              phases_[static_cast<int>(Phase::Gas)].density, gravity_);
       report_.vented_in = vented.gas_in;
       report_.vented_out = vented.gas_out;
+      report_.vented_in_by_vent = vented.gas_in_by_vent;
+      report_.vented_out_by_vent = vented.gas_out_by_vent;
       state_.vented_in += vented.gas_in;
       state_.vented_out += vented.gas_out;
       state_.removed += vented.liquid_out;

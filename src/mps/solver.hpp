@@ -64,6 +64,7 @@ struct StepReport {
   std::int64_t removed = 0;        // particles removed by outflows in the step (and liquid past a vent's face)
   std::int64_t vented_in = 0;      // gas created at the vents' outer faces in the step (gas_vent.hpp)
   std::int64_t vented_out = 0;     // gas removed past the vents' outer faces in the step
+  std::vector<std::int64_t> vented_in_by_vent, vented_out_by_vent;  // the same per vent (the case's order)
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t gas_correction_cuts = 0;     // ... by gas_correction_limit

@@ -72,8 +72,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       ++report_.regularised_rows;
     }
   }
-  // The vents' gas holds the ambient pressure rho_g g.x (gas_vent.hpp): a Dirichlet boundary of the system, and as a
-  // pressure outlet's it has no part in its neighbours' divergence (zero normal gradient of the velocity).
+  // The vents' gas holds the ambient pressure rho_g g.x (gas_vent.hpp): a Dirichlet boundary of the system; with
+  // numerics.vent_outlet = "zero_gradient" it has no part in its neighbours' divergence.
   problem_.boundary_value.clear();
   auto vented = [&](std::int64_t i) { return isVentGas(static_cast<std::size_t>(i)) && roles_.open_gas[i]; };
   if (!vent_at_start_.empty()) {
@@ -81,7 +81,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     for (std::int64_t i = 0; i < n; ++i)
       if (vented(i) && problem_.takes_part[i]) {
         problem_.unknown[i] = 0;
-        problem_.carries_velocity[i] = 0;
+        if (config_.numerics.vent_zero_gradient) problem_.carries_velocity[i] = 0;
         problem_.boundary_value[i] = ambientPressure<D>(p.position[i], gas.density, gravity_);
       }
   }

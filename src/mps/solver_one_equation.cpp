@@ -74,7 +74,10 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
         p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
     auto bordersSpace = [&] { return p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i); };
     problem_.unknown[i] = closed || !short_of_neighbours || !bordersSpace();  // bordersSpace only when short
-    if (vented(i)) problem_.unknown[i] = 0, problem_.carries_velocity[i] = 0;  // a pressure outlet (below)
+    if (vented(i)) {  // a vent's gas holds the ambient pressure (below); numerics.vent_outlet
+      problem_.unknown[i] = 0;
+      if (config_.numerics.vent_zero_gradient) problem_.carries_velocity[i] = 0;
+    }
   }
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   makeThinRowsFreeSurface();  // solver_liquid_stabilised.cpp

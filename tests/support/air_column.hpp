@@ -62,4 +62,36 @@ max = [0.26, 0.03]
 )" + ends;
 }
 
+// The column's ends sealed: a floor and a lid of wall.
+inline std::string sealedEnds() {
+  return R"(
+[[region]]
+name = "floor"
+material = "wall"
+min = [0.0, -0.04]
+max = [0.1, 0.0]
+[[region]]
+name = "lid"
+material = "wall"
+min = [0.0, 0.3]
+max = [0.1, 0.34]
+)";
+}
+
+// The column's ends as a duct: a vent across its bottom (outward -y) and one across its top (outward +y).
+inline std::string ductVents() {
+  return R"(
+[[vent]]
+name = "bottom"
+min = [0.0, -0.04]
+max = [0.1, 0.0]
+direction = [0, -1]
+[[vent]]
+name = "top"
+min = [0.0, 0.3]
+max = [0.1, 0.34]
+direction = [0, 1]
+)";
+}
+
 }  // namespace mistfall::test_support
