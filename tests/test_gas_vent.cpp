@@ -232,7 +232,8 @@ direction = [0, -1]
 }
 
 // The stabilised gas operators: the paper's let still air drift (0.047 m/s in 0.3 s, test_gas_operators.cpp), and
-// with them the duct's air reaches 0.23 m/s by 0.3 s and its vents count 70 and 76.
+// with them the duct's air reaches 0.228 m/s by 0.3 s (and its vents count 70 and 76 with vent_outlet =
+// "zero_gradient").
 TEST(GasVent, AirFlowingThroughADuctBetweenTwoVentsKeepsFlowingAndIsAccountedFor) {
   VentRun r(ductCase(0.2, "gas_operators = \"stabilised\"\n"));
   const std::int64_t gas0 = r.gas();
