@@ -34,15 +34,15 @@ bool noTmpFiles(const fs::path& dir) {
 template <int D>
 Particles<D> sampleParticles(std::size_t n) {
   Particles<D> p;
-  const ParticleKind kinds[] = {ParticleKind::Fluid, ParticleKind::Wall, ParticleKind::Dummy, ParticleKind::Escaped,
-                                ParticleKind::Inflow};
+  const ParticleKind kinds[] = {ParticleKind::Fluid, ParticleKind::Wall,   ParticleKind::Dummy,
+                                ParticleKind::Escaped, ParticleKind::Inflow, ParticleKind::Point};
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> x, u;
     for (int k = 0; k < D; ++k) {
       x[k] = 0.1 * static_cast<double>(i) + 1.0 / (3.0 + k) - 1e-17 * k;
       u[k] = std::sin(1.7 * static_cast<double>(i) + k) * 1e-3 / 7.0;
     }
-    p.add(x, u, kinds[i % 5], (i % 3 == 0) ? Phase::Gas : Phase::Liquid);
+    p.add(x, u, kinds[i % 6], (i % 3 == 0) ? Phase::Gas : Phase::Liquid);
     p.pressure.back() = 1000.0 / 3.0 * static_cast<double>(i) - 5.0;
     p.number_density.back() = 6.0 + std::cos(static_cast<double>(i)) / 11.0;
     p.enclosed.back() = (i % 6 == 0);  // some gas particles in a bubble

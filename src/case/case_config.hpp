@@ -75,6 +75,9 @@ struct PhaseProperties {
 
 struct PhysicsConfig {
   std::array<double, 3> gravity{0.0, -9.81, 0.0};  // [m/s^2]
+  // [N/m] of the liquid against the gas: water-air at 20 C. Used by the entrained bubbles' drag (Eotvos number,
+  // mps/entrained_bubbles.hpp) only; the MPS particles carry no surface tension.
+  double surface_tension = 0.0728;
   PhaseProperties liquid{};
   // Air; weakly compressible (finite sound speed: eq. (17)).
   PhaseProperties gas{1.2, 1.5e-5, 340.0};
@@ -143,6 +146,10 @@ struct NumericsConfig {
   GasDomain gas_domain = GasDomain::Open;
   // [m/s] terminal rise speed of entrained gas below a bubble's resolution (mps/entrained_gas_rise.hpp); 0 = none
   double entrained_gas_rise_speed = 0.0;
+  // [m] diameter of the bubbles that entrained gas below a bubble's resolution stands for, moved as points through
+  // the water by eq. (18) with its reaction returned to the water (mps/entrained_bubbles.hpp); 0 = off (the gas is
+  // carried by the water, or swapped by entrained_gas_rise_speed)
+  double entrained_bubble_diameter = 0.0;
   // Largest move of a gas particle by its pressure correction in one step, / l0 (0 = no limit; docs/waterfall.md)
   double gas_correction_limit = 0.0;
   // Gas particles closer than this (/ l0) belong to one gas region (enclosed_gas.hpp); 0 = radius_number_density

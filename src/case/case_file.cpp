@@ -125,12 +125,13 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
 
   // [physics]
   const toml::table& ph = rd.table(root, "", "physics");
-  rd.checkKeys(ph, "physics", {"gravity", "liquid", "gas"});
+  rd.checkKeys(ph, "physics", {"gravity", "liquid", "gas", "surface_tension"});
   c.physics.gravity = {0.0, 0.0, 0.0};
   c.physics.gravity[static_cast<std::size_t>(dim - 1)] = -9.81;  // vertical axis is the last one
   rd.vector(ph, "physics", "gravity", dim, c.physics.gravity);
   readPhase(rd, ph, "liquid", c.physics.liquid);
   readPhase(rd, ph, "gas", c.physics.gas);
+  rd.number(ph, "physics", "surface_tension", {0.0, 10.0, true, false}, c.physics.surface_tension);
 
   // [numerics]
   const std::string np = "numerics";
@@ -140,7 +141,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "pressure_repulsion", "particle_shifting", "shift_limit", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
-                "gas_domain", "entrained_gas_rise_speed", "gas_correction_limit", "gas_region_link",
+                "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet"});
   NumericsConfig& n = c.numerics;
@@ -180,6 +181,11 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (int s = rd.choice(nm, np, "gas_domain", {"open", "closed"}); s >= 0)
     n.gas_domain = s == 0 ? GasDomain::Open : GasDomain::Closed;
   rd.number(nm, np, "entrained_gas_rise_speed", {0.0, 10.0, false, false}, n.entrained_gas_rise_speed);
+  rd.number(nm, np, "entrained_bubble_diameter", {0.0, 1.0, false, false}, n.entrained_bubble_diameter);
+  if (n.entrained_bubble_diameter > 0.0 && n.entrained_gas_rise_speed > 0.0)
+    rd.fail("numerics.entrained_bubble_diameter = " + fmt(n.entrained_bubble_diameter) +
+            " moves entrained gas as points, numerics.entrained_gas_rise_speed = " + fmt(n.entrained_gas_rise_speed) +
+            " by phase swaps; allowed one of them (the other 0)");
   rd.number(nm, np, "gas_correction_limit", {0.0, 1.0, false, false}, n.gas_correction_limit);
   rd.number(nm, np, "gas_region_link", {0.0, 5.0, false, false}, n.gas_region_link);
   rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
@@ -200,6 +206,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");
+  if (n.coupling == NumericsConfig::Coupling::OneEquation && n.entrained_bubble_diameter > 0.0)
+    rd.fail("numerics.entrained_bubble_diameter = " + fmt(n.entrained_bubble_diameter) + " needs numerics.coupling = "
+            "\"two_systems\" (the one equation gives every gas particle its own momentum); allowed 0 with one_equation");
   if (n.gas_domain == GasDomain::Closed && !std::isfinite(c.physics.gas.sound_speed))
     rd.fail("numerics.gas_domain = \"closed\" needs a finite physics.gas.sound_speed (a closed incompressible gas "
             "has no pressure level); allowed \"open\", or a sound speed > 0");

@@ -219,6 +219,10 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.gas_speed_capped = std::exchange(guards.gas_speed_capped, 0);
     row.largest_shift = std::exchange(guards.largest_shift, 0.0);
     row.shift_cuts = std::exchange(guards.shift_cuts, 0);
+    row.points_made = std::exchange(guards.points_made, 0);
+    row.points_released = std::exchange(guards.points_released, 0);
+    row.point_wall_stops = std::exchange(guards.point_wall_stops, 0);
+    row.points_unpaired = std::exchange(guards.points_unpaired, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -263,6 +267,10 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.gas_speed_capped += static_cast<std::int64_t>(last.gas_speed_cuts);
         guards.largest_shift = std::max(guards.largest_shift, last.largest_shift);
         guards.shift_cuts += static_cast<std::int64_t>(last.shift_cuts);
+        guards.points_made += static_cast<std::int64_t>(last.bubble_points_made);
+        guards.points_released += static_cast<std::int64_t>(last.bubble_points_released);
+        guards.point_wall_stops += static_cast<std::int64_t>(last.bubble_point_wall_stops);
+        guards.points_unpaired += static_cast<std::int64_t>(last.bubble_points_unpaired);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);

@@ -249,7 +249,7 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
   if (stored != expected) fail(file, "checksum mismatch (file corrupted)");
   if (r.remaining() != 0) fail(file, "unexpected trailing bytes");
   for (std::size_t i = 0; i < n; ++i) {
-    if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Inflow) ||
+    if (static_cast<std::uint8_t>(p.kind[i]) > static_cast<std::uint8_t>(ParticleKind::Point) ||
         static_cast<std::uint8_t>(p.phase[i]) > static_cast<std::uint8_t>(Phase::Gas) ||
         (p.enclosed[i] != 0 && p.enclosed[i] != 1) || p.id[i] >= p.next_id) {
       fail(file, "invalid particle kind/phase/enclosed value or id");

@@ -101,6 +101,11 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::vented_in>("vented_in"),
     column<&DiagnosticsRow::vented_out>("vented_out"),
     column<&DiagnosticsRow::shift_cuts>("shift_cuts"),
+    column<&DiagnosticsRow::bubble_points>("bubble_points"),
+    column<&DiagnosticsRow::points_made>("points_made"),
+    column<&DiagnosticsRow::points_released>("points_released"),
+    column<&DiagnosticsRow::point_wall_stops>("point_wall_stops"),
+    column<&DiagnosticsRow::points_unpaired>("points_unpaired"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {
@@ -198,7 +203,7 @@ void DiagnosticsWriter::append(const DiagnosticsRow& row) {
 template <int D>
 void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_particle_mass,
                       double gas_particle_mass) {
-  row.liquid = row.gas = row.wall = row.dummy = row.escaped = row.inflow = 0;
+  row.liquid = row.gas = row.wall = row.dummy = row.escaped = row.inflow = row.bubble_points = 0;
   double max_speed2 = 0.0, energy = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     switch (p.kind[i]) {
@@ -206,6 +211,7 @@ void measureParticles(DiagnosticsRow& row, const Particles<D>& p, double liquid_
       case ParticleKind::Dummy: ++row.dummy; break;
       case ParticleKind::Escaped: ++row.escaped; break;
       case ParticleKind::Inflow: ++row.inflow; break;
+      case ParticleKind::Point: ++row.bubble_points; break;
       case ParticleKind::Fluid: {
         const bool liquid = p.phase[i] == Phase::Liquid;
         ++(liquid ? row.liquid : row.gas);

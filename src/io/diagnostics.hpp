@@ -67,6 +67,13 @@ struct DiagnosticsRow {
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;
+  // Entrained gas moved as points (numerics.entrained_bubble_diameter, mps/entrained_bubbles.hpp): points now (gas
+  // particles off the lattice; their volume is in gas_volume), and since the previous row the gas particles that
+  // became points, the points that rejoined the gas at the surface, point steps shortened next to a wall, and
+  // released points that found no water particle to give back the volume the water kept for them (the liquid count
+  // is then one above the water's mass; liquid - bubble_points is the water's particles otherwise).
+  std::size_t bubble_points = 0;
+  std::int64_t points_made = 0, points_released = 0, point_wall_stops = 0, points_unpaired = 0;
 };
 
 // Fills the particle counts (liquid/gas = non-escaped Fluid particles by phase), max_speed and

@@ -366,7 +366,7 @@ Particles<D> readVtp(const std::filesystem::path& file, VtpFrameInfo& frame) {
         p.position[i][k] = pos3[3 * i + k];
         p.velocity[i][k] = vel3[3 * i + k];
       }
-      if (kind[i] > static_cast<std::uint8_t>(ParticleKind::Inflow)) fail(file, "invalid particle kind");
+      if (kind[i] > static_cast<std::uint8_t>(ParticleKind::Point)) fail(file, "invalid particle kind");
       if (phase[i] > static_cast<std::uint8_t>(Phase::Gas)) fail(file, "invalid particle phase");
       p.kind[i] = static_cast<ParticleKind>(kind[i]);
       p.phase[i] = static_cast<Phase>(phase[i]);

@@ -17,7 +17,9 @@ namespace mistfall {
 //  Escaped: left the domain; frozen and ignored by every operator, still counted.
 //  Inflow: water in an inflow buffer (open_boundaries.hpp): driven at the inflow velocity, pressure solved like a
 //          wall's; it becomes Fluid when it leaves the buffer.
-enum class ParticleKind : std::uint8_t { Fluid = 0, Wall = 1, Dummy = 2, Escaped = 3, Inflow = 4 };
+//  Point: gas below a bubble's resolution moved as a point through the water by eq. (18) (entrained_bubbles.hpp);
+//         ignored by every MPS operator; it becomes Fluid again when it reaches the surface.
+enum class ParticleKind : std::uint8_t { Fluid = 0, Wall = 1, Dummy = 2, Escaped = 3, Inflow = 4, Point = 5 };
 
 // Which phase a particle carries (the second phase arrives with the gas model).
 enum class Phase : std::uint8_t { Liquid = 0, Gas = 1 };
@@ -78,6 +80,7 @@ inline bool isFixed(ParticleKind k) {
 inline bool hasPressureUnknown(ParticleKind k) {
   return k == ParticleKind::Fluid || k == ParticleKind::Wall || k == ParticleKind::Inflow;
 }
-inline bool isActive(ParticleKind k) { return k != ParticleKind::Escaped; }
+// Takes part in the MPS operators: every kind but escaped particles and points.
+inline bool isActive(ParticleKind k) { return k != ParticleKind::Escaped && k != ParticleKind::Point; }
 
 }  // namespace mistfall

@@ -70,6 +70,18 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
   for (std::size_t i = 0; i < state_.particles.size(); ++i) {
     const auto k = state_.particles.kind[i];
     if (k == ParticleKind::Fluid) phase_present_[static_cast<int>(state_.particles.phase[i])] = true;
+    if (k == ParticleKind::Point) phase_present_[static_cast<int>(Phase::Gas)] = true;
+  }
+  if (entrainedPoints()) {
+    EntrainedBubbleModel model;
+    model.diameter = n.entrained_bubble_diameter;
+    model.liquid_density = config.physics.liquid.density;
+    model.gas_density = config.physics.gas.density;
+    model.liquid_viscosity = config.physics.liquid.kinematic_viscosity;
+    model.surface_tension = config.physics.surface_tension;
+    model.gravity = gravity_.norm();
+    entrained_bubbles_ = std::make_unique<EntrainedBubbles<D>>(model, constants_.l0, constants_.re_number_density,
+                                                               constants_.n0, gravity_);
   }
 }
 
@@ -138,6 +150,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     auto t = timer_.scope(Stage::TimeStep);
     dt = chooseTimeStepFor(until);
   }
+  if (entrainedPoints()) start_velocity_ = state_.particles.velocity;
   {
     auto t = timer_.scope(Stage::Predict);
     predict(dt);
@@ -200,6 +213,10 @@ const StepReport& MpsSolver<D>::step(double until) {
     correctGas(dt);
     riseEntrainedGas(dt);
   }
+  if (entrainedPoints()) {
+    auto t = timer_.scope(Stage::GasCorrection);
+    moveEntrainedBubbles(dt);
+  }
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
     if (!config_.vents.empty()) {
@@ -219,6 +236,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     const std::int64_t outflow = removeOutflow<D>(state_.particles, config_);
     report_.removed += outflow;
     state_.removed += outflow;
+    removeReleasedPoints();
   }
   const bool reached = until - state_.time <= dt;
   state_.time = reached ? until : state_.time + dt;
@@ -504,7 +522,7 @@ template <int D>
 void MpsSolver<D>::markEscaped() {
   auto& p = state_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (p.kind[i] != ParticleKind::Fluid && p.kind[i] != ParticleKind::Point) continue;
     const auto& x = p.position[i];
     const bool inside = (x.array() >= domain_lower_.array()).all() && (x.array() <= domain_upper_.array()).all();
     if (!inside && x.allFinite()) {
@@ -527,8 +545,8 @@ void MpsSolver<D>::checkHealth(double) const {
   }
   // Every fluid particle that has existed: in the domain, driven in an inflow, escaped, or removed by an outflow.
   const std::size_t escaped = p.count(ParticleKind::Escaped);
-  const std::size_t total = p.count(ParticleKind::Fluid) + p.count(ParticleKind::Inflow) + escaped +
-                            static_cast<std::size_t>(state_.removed);
+  const std::size_t total = p.count(ParticleKind::Fluid) + p.count(ParticleKind::Inflow) +
+                            p.count(ParticleKind::Point) + escaped + static_cast<std::size_t>(state_.removed);
   if (total > 0 && static_cast<double>(escaped) > config_.numerics.max_escaped_fraction * static_cast<double>(total)) {
     std::ostringstream msg;
     msg << escaped << " of " << total << " fluid particles have left the domain (more than "

@@ -27,6 +27,7 @@
 #include "mps/enclosed_gas.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/phase_coupling.hpp"
+#include "mps/entrained_bubbles.hpp"
 #include "mps/neighbor_search.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "mps/reference_density.hpp"
@@ -66,6 +67,10 @@ struct StepReport {
   std::int64_t vented_out = 0;     // gas removed past the vents' outer faces in the step
   std::vector<std::int64_t> vented_in_by_vent, vented_out_by_vent;  // the same per vent (the case's order)
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
+  // numerics.entrained_bubble_diameter (entrained_bubbles.hpp): gas particles that left the lattice as points, points
+  // that returned to it at the surface, point steps shortened next to a wall
+  std::size_t bubble_points_made = 0, bubble_points_released = 0, bubble_point_wall_stops = 0;
+  std::size_t bubble_points_unpaired = 0;  // released points with no water particle to take the volume from
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t gas_correction_cuts = 0;     // ... by gas_correction_limit
   std::size_t gas_speed_cuts = 0;          // ... by gas_speed_limit (a correction may be cut by both)
@@ -161,6 +166,9 @@ class MpsSolver {
   }
   void moveBubbleGas(double dt);
   void riseEntrainedGas(double dt);
+  bool entrainedPoints() const { return config_.numerics.entrained_bubble_diameter > 0.0; }
+  void moveEntrainedBubbles(double dt);
+  void removeReleasedPoints();
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
   void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
   void solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -193,6 +201,11 @@ class MpsSolver {
   // vents) and where it was; they are driven from there, and their gas is the gas system's Dirichlet boundary.
   std::vector<int> vent_at_start_;
   std::vector<Vec<D>> vent_start_position_;
+  // numerics.entrained_bubble_diameter: the points' model, and every particle's velocity at the step's start (the
+  // water's material acceleration over the step).
+  std::unique_ptr<EntrainedBubbles<D>> entrained_bubbles_;
+  std::vector<Vec<D>> start_velocity_;
+  std::vector<std::uint64_t> released_points_;  // ids of the points released in the step, removed at its end
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;

@@ -232,6 +232,44 @@ void MpsSolver<D>::riseEntrainedGas(double dt) {
                                                               constants_.l0, speed, dt, state_.step);
 }
 
+// Entrained gas below a bubble's resolution moves as points through the water (entrained_bubbles.hpp): the gas
+// of enclosed regions too small to be bubbles, away from the vents, may leave the lattice at this step.
+template <int D>
+void MpsSolver<D>::moveEntrainedBubbles(double dt) {
+  auto& p = state_.particles;
+  std::vector<char> candidate(p.size(), 0);
+  for (std::size_t i = 0; i < p.size() && i < regions_.enclosed_particle.size(); ++i)
+    candidate[i] = regions_.enclosed_particle[i] && !roles_.enclosed_gas[i] && !isVentGas(i);
+  const std::size_t before = p.size();
+  EntrainedBubbleCounts counts = entrained_bubbles_->advance(p, start_velocity_, candidate, dt);
+  if (p.size() > before) {  // the new points take no part in the rest of the step's operators
+    roles_.extendForLiquid(p.size());
+    for (std::size_t i = before; i < p.size(); ++i) roles_.in_liquid_system[i] = 0;
+    regions_.region_of.resize(p.size(), -1);
+    regions_.enclosed_particle.resize(p.size(), 0);
+  }
+  released_points_ = std::move(counts.released_ids);
+  report_.bubble_points_made = counts.made;
+  report_.bubble_points_released = counts.released;
+  report_.bubble_point_wall_stops = counts.wall_stops;
+  report_.bubble_points_unpaired = counts.unpaired;
+}
+
+// The points released at the surface this step leave the arrays (their gas is a surface particle's now), after the
+// open boundaries' own removals (particle indices are not used again in the step).
+template <int D>
+void MpsSolver<D>::removeReleasedPoints() {
+  if (released_points_.empty()) return;
+  auto& p = state_.particles;
+  std::sort(released_points_.begin(), released_points_.end());
+  std::vector<char> remove(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    remove[i] = p.kind[i] == ParticleKind::Point &&
+                std::binary_search(released_points_.begin(), released_points_.end(), p.id[i]);
+  p.erase(remove);
+  released_points_.clear();
+}
+
 // The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp), unless numerics.bubble_gas_motion =
 // "own_pressure" (then it keeps its predicted velocity and the gas system corrects it like open gas).
 template <int D>
@@ -246,6 +284,8 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
   template Vec<D> MpsSolver<D>::stabilisedGasGradient(std::size_t) const; \
   template bool MpsSolver<D>::mirroredLiquid(std::size_t) const;         \
   template void MpsSolver<D>::riseEntrainedGas(double);     \
+  template void MpsSolver<D>::moveEntrainedBubbles(double); \
+  template void MpsSolver<D>::removeReleasedPoints();       \
   template void MpsSolver<D>::moveBubbleGas(double);
 MISTFALL_INSTANTIATE(2)
 MISTFALL_INSTANTIATE(3)

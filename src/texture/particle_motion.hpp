@@ -53,10 +53,12 @@ struct MotionResult {
   Vec3 displacement;
 };
 
-// One step of length h of eq. (18) by the exponential integrator of the header.
-inline MotionResult advanceParticle(const DragParticle& p, const Vec3& velocity, const Vec3& fluid_velocity,
-                                    const Vec3& forcing, double h) {
-  double tau = relaxationTime(p, (fluid_velocity - velocity).norm());
+// One step of length h of du_p/dt = (u_f - u_p) / tau(|u_f - u_p|) + a by the exponential integrator of the header,
+// for any drag law given as its relaxation time at a relative speed (also mps/entrained_bubbles.hpp).
+template <class RelaxationTime>
+MotionResult advanceRelaxing(const Vec3& velocity, const Vec3& fluid_velocity, const Vec3& forcing, double h,
+                             RelaxationTime&& tau_at) {
+  double tau = tau_at((fluid_velocity - velocity).norm());
   MotionResult r;
   for (int pass = 0; pass < 3; ++pass) {
     const Vec3 drift = fluid_velocity + forcing * tau;  // the velocity the particle relaxes to
@@ -65,9 +67,16 @@ inline MotionResult advanceParticle(const DragParticle& p, const Vec3& velocity,
     r.displacement = drift * h + (velocity - drift) * (tau * (1.0 - decay));
     if (pass == 2) break;
     const double mean_slip = 0.5 * ((fluid_velocity - velocity).norm() + (fluid_velocity - r.velocity).norm());
-    tau = relaxationTime(p, mean_slip);
+    tau = tau_at(mean_slip);
   }
   return r;
+}
+
+// One step of length h of eq. (18) with the drag (19).
+inline MotionResult advanceParticle(const DragParticle& p, const Vec3& velocity, const Vec3& fluid_velocity,
+                                    const Vec3& forcing, double h) {
+  return advanceRelaxing(velocity, fluid_velocity, forcing, h,
+                         [&](double slip) { return relaxationTime(p, slip); });
 }
 
 }  // namespace mistfall

@@ -1,0 +1,276 @@
+// Entrained gas below a bubble's resolution as points that rise through the water (Euler-Lagrange), with eq. (18)
+// of Gotoh et al. for their motion and eq. (7)'s interaction force returned to the water: numerics.
+// entrained_bubble_diameter > 0 (docs/two-phase.md). It replaces the phase swaps of entrained_gas_rise.hpp.
+//
+// A gas particle of an enclosed region smaller than numerics.bubble_min_particles (phase_coupling.hpp) that lies
+// deep in the water (the liquid's number density around it at least kConvertFraction n0) leaves the MPS lattice and
+// becomes a point (ParticleKind::Point, ignored by every MPS operator) standing for bubbles of diameter d that fill
+// its volume V = l0^D. The water closes the gap (its incompressibility). The point moves by eq. (18) with the liquid
+// as the carrying fluid:
+//   (rho_g + C_M rho_l) V du_b/dt = F_D + rho_l (1 + C_M) V Du_l/Dt + (rho_g - rho_l) V g
+//   F_D = (rho_g + C_M rho_l) V (u_l - u_b) / tau,   tau = 4 (rho_g/rho_l + C_M) d / (3 C_D |u_l - u_b|)
+// with C_M = 1/2 and the drag coefficient of Tomiyama, Kataoka, Zun & Sakaguchi (1998) for a bubble in pure water,
+//   C_D = max( min(24/Re (1 + 0.15 Re^0.687), 72/Re), 8/3 Eo/(Eo + 4) ),
+//   Re = |u_l - u_b| d / nu_l,  Eo = (rho_l - rho_g) |g| d^2 / sigma,
+// whose first branch is eq. (19) and whose last holds for a bubble its rise deforms (d above ~2 mm in water): the
+// terminal rise in still water, C_D U^2 = 4/3 (1 - rho_g/rho_l) |g| d, is 0.23 m/s at d = 5 mm, the measured rise of
+// air bubbles of that size (Clift, Grace & Weber 1978), where eq. (19) alone gives a rigid sphere's 0.44 m/s.
+// u_l and Du_l/Dt are weighted means over the liquid particles within re of the point (weight (1 - r/re)^2): their
+// velocity at the step's end and their velocity change over the step divided by dt (the water's material
+// acceleration). A step is integrated exactly for u_l, Du_l/Dt and tau held fixed (texture/particle_motion.hpp).
+//
+// The water feels the bubbles (two-way coupling): the drag and added-mass force the water exerts on the point,
+// F = F_D + rho_l C_M V (Du_l/Dt - du_b/dt), goes back to the same liquid particles with the same weights, as the
+// momentum -F dt w_j / sum w. In still water at the terminal speed it is the bubbles' buoyancy (rho_l - rho_g) V |g|,
+// pushing the water up: the drive of a bubble plume, in the dilute Euler-Lagrange form (the volume the point stands
+// for is not in the water's lattice; e.g. Darmana, Deen & Kuipers 2005, Chem. Eng. Sci. 60, 3383).
+//
+// A point whose liquid number density falls below kReleaseFraction n0 has reached the surface or left the water: it
+// becomes a gas particle again where it is, with its velocity, and joins the air. A point is not moved closer than
+// l0/2 to a wall or dummy particle (the part of its step towards one is taken away). Gas mass is conserved exactly:
+// a point is one gas particle. The points are processed serially in index order: the result does not depend on the
+// thread count.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "mps/particles.hpp"
+#include "mps/phase_coupling.hpp"
+#include "mps/weight.hpp"
+#include "texture/particle_motion.hpp"
+
+namespace mistfall {
+
+// The liquid number density (/ n0) around a gas particle at which it leaves the lattice as a point, and below which
+// a point returns to it. Their gap keeps a point that reaches the surface from turning back at once.
+inline constexpr double kConvertFraction = 0.8;
+inline constexpr double kReleaseFraction = 0.5;
+
+struct EntrainedBubbleModel {
+  double diameter = 0.0;         // d [m]
+  double liquid_density = 1000.0, gas_density = 1.2;
+  double liquid_viscosity = 1e-6;  // nu_l [m^2/s]
+  double surface_tension = 0.0728;  // sigma [N/m]
+  double added_mass = 0.5;       // C_M
+  double gravity = 9.81;         // |g| [m/s^2]
+
+  double densityRatio() const { return gas_density / liquid_density; }
+  double eotvos() const {
+    return (liquid_density - gas_density) * gravity * diameter * diameter / surface_tension;
+  }
+  // C_D Re of Tomiyama et al. (1998), pure water: finite as Re -> 0 (24).
+  double dragTimesReynolds(double reynolds) const {
+    const double viscous = std::min(24.0 * (1.0 + 0.15 * std::pow(reynolds, 0.687)), 72.0);
+    const double eo = eotvos();
+    return std::max(viscous, 8.0 / 3.0 * eo / (eo + 4.0) * reynolds);
+  }
+  // tau of the header at relative speed `slip`.
+  double relaxationTime(double slip) const {
+    const double re = slip * diameter / liquid_viscosity;
+    return 4.0 * (densityRatio() + added_mass) * diameter * diameter /
+           (3.0 * liquid_viscosity * dragTimesReynolds(re));
+  }
+  // The terminal rise speed in still water, C_D U^2 = 4/3 (1 - rho_g/rho_l) |g| d (bisection).
+  double terminalSpeed() const {
+    double lo = 0.0, hi = 10.0;
+    for (int k = 0; k < 200; ++k) {
+      const double u = 0.5 * (lo + hi);
+      const double cd = dragTimesReynolds(u * diameter / liquid_viscosity) * liquid_viscosity / (u * diameter);
+      (cd * u * u < 4.0 / 3.0 * (1.0 - densityRatio()) * gravity * diameter ? lo : hi) = u;
+    }
+    return 0.5 * (lo + hi);
+  }
+};
+
+struct EntrainedBubbleCounts {
+  std::size_t made = 0;      // gas particles that became points in the step
+  std::size_t released = 0;  // points that returned to the gas at the surface
+  std::size_t unpaired = 0;  // ... of which became gas particles themselves (no water particle to give the volume)
+  std::size_t wall_stops = 0;  // point steps shortened next to a wall
+  std::vector<std::uint64_t> released_ids;  // the points to remove (their gas is now a surface particle's)
+};
+
+template <int D>
+class EntrainedBubbles {
+ public:
+  EntrainedBubbles(const EntrainedBubbleModel& model, double l0, double re, double n0, const Vec<D>& gravity)
+      : model_(model), l0_(l0), re_(re), n0_(n0), gravity_(gravity), cell_(re) {}
+
+  // One step of length dt after the pressure corrections. `start_velocity` holds each particle's velocity at the
+  // step's start (particles made since take their velocity now); `candidate[i]` marks the gas the step may turn into
+  // points (enclosed, below a bubble's size, not a vent's).
+  EntrainedBubbleCounts advance(Particles<D>& p, const std::vector<Vec<D>>& start_velocity,
+                                const std::vector<char>& candidate, double dt) {
+    EntrainedBubbleCounts counts;
+    bool any = false;
+    for (std::size_t i = 0; i < p.size() && !any; ++i)
+      any = p.kind[i] == ParticleKind::Point || (i < candidate.size() && candidate[i]);
+    if (!any) return counts;
+    bin(p);
+    const double mass = model_.liquid_density * std::pow(l0_, D);  // of a liquid particle
+    const double volume = std::pow(l0_, D);
+    const double effective = (model_.gas_density + model_.added_mass * model_.liquid_density) * volume;
+    std::vector<std::int32_t> near;
+    std::vector<double> share;
+    for (std::size_t b = 0; b < p.size(); ++b) {
+      if (p.kind[b] != ParticleKind::Point) continue;
+      const Liquid l = liquidAround(p, start_velocity, p.position[b], dt, near, share);
+      if (l.number_density < kReleaseFraction * n0_) {  // at the surface: the water gives back the volume
+        std::int32_t nearest = -1;
+        double closest = 0.0;
+        for (auto j : near) {
+          const double r = (p.position[j] - p.position[b]).squaredNorm();
+          if (p.kind[j] == ParticleKind::Fluid && (nearest < 0 || r < closest)) nearest = j, closest = r;
+        }
+        if (nearest >= 0) {
+          p.phase[nearest] = Phase::Gas;
+          p.enclosed[nearest] = 0;
+          counts.released_ids.push_back(p.id[b]);
+        } else {  // no water particle to take the volume from (only inflow water near): the point is the gas
+          p.kind[b] = ParticleKind::Fluid;
+          ++counts.unpaired;
+        }
+        ++counts.released;
+        continue;
+      }
+      const Vec3 ub = to3(p.velocity[b]), ul = to3(l.velocity), al = to3(l.acceleration), g = to3(gravity_);
+      const double r = model_.densityRatio(), cm = model_.added_mass;
+      const Vec3 forcing = ((1.0 + cm) * al + (r - 1.0) * g) / (r + cm);
+      const MotionResult m = advanceRelaxing(ub, ul, forcing, dt, [&](double s) { return model_.relaxationTime(s); });
+      // F_D from eq. (18) with the step's du_b/dt, then the added-mass force; their reaction goes to the water.
+      const Vec3 dub = (m.velocity - ub) / dt;
+      const Vec3 drag = effective * dub - model_.liquid_density * (1.0 + cm) * volume * al -
+                        (model_.gas_density - model_.liquid_density) * volume * g;
+      const Vec3 on_water = -(drag + model_.liquid_density * cm * volume * (al - dub));
+      for (std::size_t k = 0; k < near.size(); ++k)
+        p.velocity[near[k]] += from3(on_water) * (dt * share[k] / mass);
+      Vec<D> step = from3(m.displacement), velocity = from3(m.velocity);
+      counts.wall_stops += keepOffWalls(p, p.position[b], step, velocity);
+      p.position[b] += step;
+      p.velocity[b] = velocity;
+      p.pressure[b] = l.pressure;
+      p.number_density[b] = l.number_density;
+    }
+    const std::size_t n = p.size();
+    for (std::size_t i = 0; i < n && i < candidate.size(); ++i) {
+      if (!candidate[i] || !isGas(p.kind[i], p.phase[i])) continue;
+      if (liquidAround(p, start_velocity, p.position[i], dt, near, share).number_density < kConvertFraction * n0_)
+        continue;
+      p.add(p.position[i], p.velocity[i], ParticleKind::Point, Phase::Gas);
+      p.phase[i] = Phase::Liquid;  // the water keeps the volume: the particle stays in the lattice as water
+      p.enclosed[i] = 0;
+      ++counts.made;
+    }
+    return counts;
+  }
+
+ private:
+  struct Liquid {
+    double number_density = 0.0;  // sum of the MPS weight over the liquid within re
+    double pressure = 0.0;
+    Vec<D> velocity = Vec<D>::Zero(), acceleration = Vec<D>::Zero();
+  };
+
+  static Vec3 to3(const Vec<D>& v) {
+    Vec3 w = Vec3::Zero();
+    for (int k = 0; k < D; ++k) w[k] = v[k];
+    return w;
+  }
+  static Vec<D> from3(const Vec3& w) {
+    Vec<D> v;
+    for (int k = 0; k < D; ++k) v[k] = w[k];
+    return v;
+  }
+  std::int64_t key(const Eigen::Matrix<std::int64_t, D, 1>& c) const {
+    std::int64_t k = 0;
+    for (int d = 0; d < D; ++d) k = k * 2000003 + c[d];
+    return k;
+  }
+  Eigen::Matrix<std::int64_t, D, 1> cellOf(const Vec<D>& x) const {
+    Eigen::Matrix<std::int64_t, D, 1> c;
+    for (int d = 0; d < D; ++d) c[d] = static_cast<std::int64_t>(std::floor(x[d] / cell_));
+    return c;
+  }
+  // The liquid (fluid and inflow particles of the liquid phase) and the walls and dummies, by cell of edge re.
+  void bin(const Particles<D>& p) {
+    cells_.clear();
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      const bool liquid = (p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow) &&
+                          p.phase[j] == Phase::Liquid;
+      const bool wall = p.kind[j] == ParticleKind::Wall || p.kind[j] == ParticleKind::Dummy;
+      if ((liquid || wall) && p.position[j].allFinite())
+        cells_[key(cellOf(p.position[j]))].push_back(static_cast<std::int32_t>(j));
+    }
+  }
+  template <class Visit>
+  void forEachNear(const Vec<D>& x, Visit&& visit) const {
+    const auto c = cellOf(x);
+    Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-1);
+    while (true) {
+      const auto it = cells_.find(key(c + o));
+      if (it != cells_.end())
+        for (auto j : it->second) visit(j);
+      int d = 0;
+      while (d < D && o[d] == 1) o[d++] = -1;
+      if (d == D) break;
+      ++o[d];
+    }
+  }
+  Liquid liquidAround(const Particles<D>& p, const std::vector<Vec<D>>& start_velocity, const Vec<D>& x, double dt,
+                      std::vector<std::int32_t>& near, std::vector<double>& share) const {
+    Liquid l;
+    near.clear();
+    share.clear();
+    double total = 0.0;
+    forEachNear(x, [&](std::int32_t j) {
+      if (p.phase[j] != Phase::Liquid || !(p.kind[j] == ParticleKind::Fluid || p.kind[j] == ParticleKind::Inflow))
+        return;
+      const double r = (p.position[j] - x).norm();
+      if (r >= re_) return;
+      l.number_density += weight(r, re_);
+      const double w = (1.0 - r / re_) * (1.0 - r / re_);
+      const Vec<D> before = static_cast<std::size_t>(j) < start_velocity.size() ? start_velocity[j] : p.velocity[j];
+      l.velocity += w * p.velocity[j];
+      l.acceleration += w * (p.velocity[j] - before) / dt;
+      l.pressure += w * p.pressure[j];
+      near.push_back(j);
+      share.push_back(w);
+      total += w;
+    });
+    if (total > 0.0) {
+      l.velocity /= total;
+      l.acceleration /= total;
+      l.pressure /= total;
+      for (double& s : share) s /= total;
+    }
+    return l;
+  }
+  // Takes away the part of `step` (and of `velocity`) that brings x closer than l0/2 to a wall or dummy particle.
+  bool keepOffWalls(const Particles<D>& p, const Vec<D>& x, Vec<D>& step, Vec<D>& velocity) const {
+    bool stopped = false;
+    forEachNear(x + step, [&](std::int32_t j) {
+      if (p.kind[j] != ParticleKind::Wall && p.kind[j] != ParticleKind::Dummy) return;
+      const Vec<D> away = x + step - p.position[j];
+      const double r = away.norm();
+      if (r >= 0.5 * l0_ || r == 0.0) return;
+      const Vec<D> n = away / r;
+      const double in = step.dot(n);
+      if (in < 0.0) step -= in * n, stopped = true;
+      const double vin = velocity.dot(n);
+      if (vin < 0.0) velocity -= vin * n;
+    });
+    return stopped;
+  }
+
+  EntrainedBubbleModel model_;
+  double l0_, re_, n0_;
+  Vec<D> gravity_;
+  double cell_;
+  std::unordered_map<std::int64_t, std::vector<std::int32_t>> cells_;
+};
+
+}  // namespace mistfall
