@@ -13,7 +13,7 @@ case's numerics.entrained_gas_rise_speed (default 0.23 m/s).
 Measured, per frame from --from to --to:
 * the pool level y_s: the floor plus the water's area over the level window (default the last 35 cm of the pool
   before the weir, less 5 cm) per unit length, counted below twice the weir's crest height;
-* the air under it: gas particles of the pool's span below y_s - l0 whose fluid neighbours (within 2.1 l0) are at
+* the air under it: gas particles (and entrained points) of the pool's span below y_s - l0 whose fluid neighbours (within 2.1 l0) are at
   least half water, at depth d = y_s - y; their number, deepest and 90th-percentile depth;
 * the jet: in each frame, the fastest downward water particle in each band of depth l0 over the pool's span; the
   median over the frames is the measured u_c (at the paper's l0 = 5 mm the sheet, q / V0 = 6.3 mm, is about one
@@ -33,7 +33,7 @@ import warnings
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from overfall_profile import (ROUSE_BRINK_RATIO, add_window_arguments, frames_between,  # noqa: E402
                               read_overfall_case, region_box)
-from plot_frames import Parser, PlotError, read_vtp, KIND_FLUID  # noqa: E402
+from plot_frames import Parser, PlotError, read_vtp, KIND_FLUID, KIND_POINT  # noqa: E402
 
 import numpy as np  # noqa: E402
 import tomllib  # noqa: E402
@@ -75,13 +75,17 @@ def run(args):
         fluid = a["kind"] == KIND_FLUID
         pts = a["Points"][:, :2]
         liquid, gas = fluid & (a["phase"] == 0), fluid & (a["phase"] == 1)
+        # entrained air moved as points (numerics.entrained_bubble_diameter): air under water, and the water keeps
+        # a particle for each point's volume
+        point = a["kind"] == KIND_POINT
         xl, yl = pts[liquid, 0], pts[liquid, 1]
         window = liquid.copy()
         window[liquid] = (xl > level_lo) & (xl < level_hi) & (yl < cap)
-        y_s = y_floor + window.sum() * l0 * l0 / (level_hi - level_lo)
+        in_window = point & (pts[:, 0] > level_lo) & (pts[:, 0] < level_hi) & (pts[:, 1] < cap)
+        y_s = y_floor + (window.sum() - in_window.sum()) * l0 * l0 / (level_hi - level_lo)
         levels.append(y_s)
         # the air under the surface, among water
-        cand = np.flatnonzero(gas & (pts[:, 0] > 0.0) & (pts[:, 0] < x_weir) & (pts[:, 1] < y_s - l0))
+        cand = np.flatnonzero((gas | point) & (pts[:, 0] > 0.0) & (pts[:, 0] < x_weir) & (pts[:, 1] < y_s - l0))
         near = fluid & (pts[:, 1] < y_s + 2.1 * l0)
         near_pts, near_water = pts[near], a["phase"][near] == 0
         depths = []

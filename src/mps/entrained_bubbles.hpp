@@ -5,13 +5,15 @@
 // A gas particle of an enclosed region smaller than numerics.bubble_min_particles (phase_coupling.hpp) that lies
 // deep in the water (the liquid's number density around it at least kConvertFraction n0) leaves the MPS lattice and
 // becomes a point (ParticleKind::Point, ignored by every MPS operator) standing for bubbles of diameter d that fill
-// its volume V = l0^D. The water closes the gap (its incompressibility). The point moves by eq. (18) with the liquid
-// as the carrying fluid:
+// its volume V = l0^D. The particle itself stays in the lattice as water, so the water keeps the bubbles' volume (a
+// gap left in the lattice would close at 0.2 m/s, measured) and carries their weight, which the point's reaction
+// below takes off again. The point moves by eq. (18) with the liquid as the carrying fluid:
 //   (rho_g + C_M rho_l) V du_b/dt = F_D + rho_l (1 + C_M) V Du_l/Dt + (rho_g - rho_l) V g
 //   F_D = (rho_g + C_M rho_l) V (u_l - u_b) / tau,   tau = 4 (rho_g/rho_l + C_M) d / (3 C_D |u_l - u_b|)
-// with C_M = 1/2 and the drag coefficient of Tomiyama, Kataoka, Zun & Sakaguchi (1998) for a bubble in pure water,
+// with C_M = 1/2 and the drag coefficient of Tomiyama, Kataoka, Zun & Sakaguchi (1998) for a bubble in slightly
+// contaminated water (tap water; their purified-water form has 16/Re and 48/Re),
 //   C_D = max( min(24/Re (1 + 0.15 Re^0.687), 72/Re), 8/3 Eo/(Eo + 4) ),
-//   Re = |u_l - u_b| d / nu_l,  Eo = (rho_l - rho_g) |g| d^2 / sigma,
+//   Re = |u_l - u_b| d / nu_l,  Eo = (rho_l - rho_g) |g| d^2 / sigma  (sigma: physics.surface_tension),
 // whose first branch is eq. (19) and whose last holds for a bubble its rise deforms (d above ~2 mm in water): the
 // terminal rise in still water, C_D U^2 = 4/3 (1 - rho_g/rho_l) |g| d, is 0.23 m/s at d = 5 mm, the measured rise of
 // air bubbles of that size (Clift, Grace & Weber 1978), where eq. (19) alone gives a rigid sphere's 0.44 m/s.
@@ -22,13 +24,17 @@
 // The water feels the bubbles (two-way coupling): the drag and added-mass force the water exerts on the point,
 // F = F_D + rho_l C_M V (Du_l/Dt - du_b/dt), goes back to the same liquid particles with the same weights, as the
 // momentum -F dt w_j / sum w. In still water at the terminal speed it is the bubbles' buoyancy (rho_l - rho_g) V |g|,
-// pushing the water up: the drive of a bubble plume, in the dilute Euler-Lagrange form (the volume the point stands
-// for is not in the water's lattice; e.g. Darmana, Deen & Kuipers 2005, Chem. Eng. Sci. 60, 3383).
+// pushing the water up: the drive of a bubble plume, in the dilute Euler-Lagrange form (the force without the
+// pressure's part; e.g. Darmana, Deen & Kuipers 2005, Chem. Eng. Sci. 60, 3383). With the water's own weight on the kept volume, the
+// mixture's weight is right: the lattice carries rho_l V g where the bubbles are, the reaction takes rho_l V g off.
+// The Du_l/Dt a point reads holds the water's response to its own force (the self-induced disturbance of two-way
+// point coupling): in still water the slip is 10 % under the terminal speed (tests/test_entrained_bubbles.cpp).
 //
-// A point whose liquid number density falls below kReleaseFraction n0 has reached the surface or left the water: it
-// becomes a gas particle again where it is, with its velocity, and joins the air. A point is not moved closer than
-// l0/2 to a wall or dummy particle (the part of its step towards one is taken away). Gas mass is conserved exactly:
-// a point is one gas particle. The points are processed serially in index order: the result does not depend on the
+// A point whose liquid number density falls below kReleaseFraction n0 has reached the surface or left the water: the
+// water particle nearest to it becomes gas (the water gives the volume back where the bubbles leave it) and the point
+// is removed; water particles less points is the water's count throughout, and gas particles plus points the gas's.
+// A point is not moved closer than l0/2 to a wall or dummy particle (the part of its step towards one is taken
+// away). The points are processed serially in index order: the result does not depend on the
 // thread count.
 #pragma once
 
