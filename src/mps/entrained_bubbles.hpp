@@ -126,17 +126,19 @@ class EntrainedBubbles {
       if (p.kind[b] != ParticleKind::Point) continue;
       const Liquid l = liquidAround(p, start_velocity, p.position[b], dt, near, share);
       if (l.number_density < kReleaseFraction * n0_) {  // at the surface: the water gives back the volume
+        // the nearest water particle in the cells around (within re at least: the water may have left it)
         std::int32_t nearest = -1;
         double closest = 0.0;
-        for (auto j : near) {
+        forEachNear(p.position[b], [&](std::int32_t j) {
+          if (p.kind[j] != ParticleKind::Fluid || p.phase[j] != Phase::Liquid) return;
           const double r = (p.position[j] - p.position[b]).squaredNorm();
-          if (p.kind[j] == ParticleKind::Fluid && (nearest < 0 || r < closest)) nearest = j, closest = r;
-        }
+          if (nearest < 0 || r < closest) nearest = j, closest = r;
+        });
         if (nearest >= 0) {
           p.phase[nearest] = Phase::Gas;
           p.enclosed[nearest] = 0;
           counts.released_ids.push_back(p.id[b]);
-        } else {  // no water particle to take the volume from (only inflow water near): the point is the gas
+        } else {  // no water particle near to take the volume from: the point is the gas
           p.kind[b] = ParticleKind::Fluid;
           ++counts.unpaired;
         }
