@@ -139,6 +139,21 @@ TYPED_TEST(Classification, GasParticleInsideLiquidIsABubble) {
   }
 }
 
+// An entrained bubble moved as a point (numerics.entrained_bubble_diameter) inside a full liquid block, which keeps
+// a water particle where it was made: a bubble, and the water around it all bulk (the point is no MPS particle).
+TYPED_TEST(Classification, EntrainedPointIsABubbleInBulkWater) {
+  constexpr int D = TypeParam::value;
+  Particles<D> p;
+  const Index<D> lo = filled<D>(-4), hi = filled<D>(4);
+  addBox<D>(p, lo, hi, ParticleKind::Fluid, Phase::Liquid);
+  const std::size_t point = p.size();
+  p.add(Vec<D>::Constant(0.3 * kL0), Vec<D>::Zero(), ParticleKind::Point, Phase::Gas);
+  const auto cat = classify<D>(p);
+  EXPECT_EQ(Category::Bubble, cat[point]);
+  for (std::size_t i = 0; i < point; ++i)
+    if (rowsFromFace<D>(indexOf<D>(p, i), lo, hi) > 0) EXPECT_EQ(Category::LiquidBulk, cat[i]) << "particle " << i;
+}
+
 // Clumps of 2, 3 and 4 (2D) / 8 (3D) particles are droplets; a block's corner particle is not.
 TYPED_TEST(Classification, SmallClumpsAreDroplets) {
   constexpr int D = TypeParam::value;

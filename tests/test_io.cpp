@@ -162,7 +162,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
       "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift,"
-      "vented_in,vented_out,shift_cuts",
+      "vented_in,vented_out,shift_cuts,bubble_points,points_made,points_released,point_wall_stops,points_unpaired",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -180,6 +180,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.gas_set_dt = 14; r.liquid_dt_steps = 15.25; r.entrained_gas = 16;
   r.gas_correction_capped = 17; r.gas_speed_capped = 18; r.largest_shift = 0.03125;
   r.vented_in = 21; r.vented_out = 22; r.shift_cuts = 23;
+  r.bubble_points = 24; r.points_made = 25; r.points_released = 26; r.point_wall_stops = 27; r.points_unpaired = 28;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -222,6 +223,11 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(14, rows[0].gas_set_dt);
   EXPECT_EQ(15.25, rows[0].liquid_dt_steps);
   EXPECT_EQ(16, rows[0].entrained_gas);
+  EXPECT_EQ(24u, rows[0].bubble_points);
+  EXPECT_EQ(25, rows[0].points_made);
+  EXPECT_EQ(26, rows[0].points_released);
+  EXPECT_EQ(27, rows[0].point_wall_stops);
+  EXPECT_EQ(28, rows[0].points_unpaired);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

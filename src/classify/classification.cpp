@@ -75,6 +75,10 @@ std::vector<Category> classifyParticles(const Particles<D>& p, const NeighborLis
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     const auto pi = static_cast<std::size_t>(i);
+    if (p.kind[pi] == ParticleKind::Point) {  // entrained gas moved as a point: an isolated gas particle by construction
+      out[pi] = Category::Bubble;
+      continue;
+    }
     if (p.kind[pi] != ParticleKind::Fluid) continue;
     const Neighbourhood<D> h = neighbourhoodOf<D>(pi, p, nl, re);
     const Phase ph = p.phase[pi];

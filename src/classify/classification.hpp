@@ -20,7 +20,8 @@
 //   bulk                         otherwise.
 // Walls count for the surface test, so water lying on a wall is bulk on its wall side rather than surface; they
 // do not count for isolation, so a lone particle touching a wall is still a droplet (or bubble).
-// Wall, dummy, escaped and inflow particles are not fluid and get None.
+// Wall, dummy, escaped and inflow particles are not fluid and get None. A point (entrained gas below a bubble's
+// resolution, mps/entrained_bubbles.hpp) is a bubble: an isolated gas particle by how it is made.
 //
 // Per-particle OpenMP loop; each particle's category depends only on the neighbour list, so the result does not
 // depend on the thread count.

@@ -65,7 +65,7 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
   c.micro_bubble_radius = r.micro_bubble_radius;
   std::vector<std::size_t> liquid;  // fluid liquid particles
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (p.kind[i] != ParticleKind::Fluid && p.kind[i] != ParticleKind::Point) continue;  // points: entrained air
     const auto cat = category.empty() ? Category::None : static_cast<Category>(category[i]);
     if (p.phase[i] == Phase::Liquid) {
       liquid.push_back(i);
@@ -81,7 +81,7 @@ FrameScene frameScene(const Particles<D>& p, const std::vector<std::uint8_t>& ca
   // Foam: liquid surface particles within kFoamReach l0 of air in the water (where the jet drags air under).
   std::vector<Vec<D>> air_points;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas &&
+    if ((p.kind[i] == ParticleKind::Fluid || p.kind[i] == ParticleKind::Point) && p.phase[i] == Phase::Gas &&
         (categoryOf(i) == Category::Bubble || p.enclosed[i]))
       air_points.push_back(p.position[i]);
   for (std::size_t i : liquid) {
