@@ -224,3 +224,40 @@ TEST(EntrainedBubbles, ResumeFromCheckpointIsBitIdentical) {
   EXPECT_EQ(whole.state.step, second.state.step);
   test_support::expectSameParticles(whole.state.particles, second.state.particles);
 }
+
+// A point at a water surface is released: the water particle nearest to it becomes gas with the point's velocity,
+// its momentum goes to the water around it (the water's momentum is kept to round-off), and the point is listed
+// for removal.
+TEST(EntrainedBubbles, ReleaseAtTheSurfaceKeepsTheWatersMomentum) {
+  const double l0 = 0.005, re = 2.1 * l0, dt = 5e-4;
+  const EntrainedBubbleModel model = airInWater(0.005);
+  Particles<2> p;
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 0; ++j)
+      p.add(Vec<2>(i * l0, j * l0), Vec<2>(0.1 * std::sin(i + 2.0 * j), 0.05 * std::cos(3.0 * i - j)),
+            ParticleKind::Fluid, Phase::Liquid);
+  p.add(Vec<2>(0.2 * l0, 0.9 * l0), Vec<2>(0.01, 0.3), ParticleKind::Point, Phase::Gas);
+  const std::size_t b = p.size() - 1;
+  Vec<2> before = Vec<2>::Zero();
+  for (std::size_t j = 0; j < b; ++j) before += p.velocity[j];
+  const MpsConstants c = referenceConstants(2, l0, 2.1, 2.1);
+  EntrainedBubbles<2> points(model, l0, re, c.n0, Vec<2>(0.0, -9.81));
+  const EntrainedBubbleCounts counts = points.advance(p, p.velocity, std::vector<char>(p.size(), 0), dt);
+  ASSERT_EQ(counts.released, 1u);
+  ASSERT_EQ(counts.released_ids.size(), 1u);
+  EXPECT_EQ(counts.released_ids[0], p.id[b]);
+  std::size_t gas = 0;
+  Vec<2> after = Vec<2>::Zero();
+  for (std::size_t j = 0; j < b; ++j) {
+    if (p.phase[j] == Phase::Gas) {
+      ++gas;
+      EXPECT_EQ(p.velocity[j], Vec<2>(0.01, 0.3));
+      EXPECT_NEAR((p.position[j] - Vec<2>(0.0, 0.0)).norm(), 0.0, 1e-12);  // the top row's particle under it
+    } else {
+      after += p.velocity[j];
+    }
+  }
+  EXPECT_EQ(gas, 1u);
+  EXPECT_NEAR(after[0], before[0], 1e-12);
+  EXPECT_NEAR(after[1], before[1], 1e-12);
+}
