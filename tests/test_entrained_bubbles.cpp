@@ -14,7 +14,7 @@
 #include "mps/reference_density.hpp"
 #include "support/run_case.hpp"
 #include "support/same_particles.hpp"
-#include "support/tank_case.hpp"
+#include "support/pocket_tank.hpp"
 
 using namespace mistfall;
 
@@ -26,19 +26,12 @@ EntrainedBubbleModel airInWater(double diameter) {
   return m;
 }
 
-constexpr int kColumns = 5, kPockets = 2 * kColumns;
-constexpr double kLowRow = 0.0125, kHighRow = 0.0275;
+using test_support::kPockets;
 
-// The tank of support/tank_case.hpp (water 0.06 m deep under air to 0.09 m, l0 = 5 mm) with ten single gas
-// particles in two rows, as tests/test_entrained_gas.cpp, moved as points of bubbles of `diameter`.
+// The ten single gas particles of support/pocket_tank.hpp, moved as points of bubbles of `diameter`.
 std::string pointsCase(double diameter) {
-  std::string text = test_support::tankCase("entrained_points", true, false, "",
-                                            "entrained_bubble_diameter = " + std::to_string(diameter) + "\n");
-  for (int k = 0; k < kPockets; ++k)
-    text += "[[region]]\nname = \"pocket" + std::to_string(k) + "\"\nmaterial = \"gas\"\nshape = \"circle\"\n" +
-            "center = [" + std::to_string(0.0175 + 0.015 * (k % kColumns)) + ", " +
-            std::to_string(k < kColumns ? kLowRow : kHighRow) + "]\nradius = 0.003\n";
-  return text;
+  return test_support::pocketTankCase("entrained_points",
+                                      "entrained_bubble_diameter = " + std::to_string(diameter) + "\n");
 }
 
 struct PointsRun : test_support::SolverRun<2> {

@@ -17,26 +17,18 @@
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/solver.hpp"
 #include "support/run_case.hpp"
-#include "support/tank_case.hpp"
+#include "support/pocket_tank.hpp"
 
 using namespace mistfall;
 
 namespace {
 
-constexpr int kColumns = 5, kPockets = 2 * kColumns;
-constexpr double kLowRow = 0.0125, kHighRow = 0.0275, kStartHeight = 0.5 * (kLowRow + kHighRow);
+using test_support::kPockets;
+constexpr double kStartHeight = 0.5 * (test_support::kPocketLowRow + test_support::kPocketHighRow);
 
-// The tank of support/tank_case.hpp (water 0.06 m deep under air to 0.09 m, l0 = 5 mm) with ten single gas
-// particles in two rows (1.25 and 2.75 cm above the floor), 1.5 cm apart and at least 1.75 cm from the side walls
-// (gas within re of a wall is not enclosed: enclosed_gas.hpp).
 std::string entrainedCase(double rise_speed) {
-  std::string text = test_support::tankCase("entrained_gas", true, false, "",
-                                            "entrained_gas_rise_speed = " + std::to_string(rise_speed) + "\n");
-  for (int k = 0; k < kPockets; ++k)
-    text += "[[region]]\nname = \"pocket" + std::to_string(k) + "\"\nmaterial = \"gas\"\nshape = \"circle\"\n" +
-            "center = [" + std::to_string(0.0175 + 0.015 * (k % kColumns)) + ", " +
-            std::to_string(k < kColumns ? kLowRow : kHighRow) + "]\nradius = 0.003\n";
-  return text;
+  return test_support::pocketTankCase("entrained_gas",
+                                      "entrained_gas_rise_speed = " + std::to_string(rise_speed) + "\n");
 }
 
 struct EntrainedRun : test_support::SolverRun<2> {
