@@ -3,7 +3,8 @@
 
 Reads RUN_DIR/frames.pvd and the VTK PolyData frames it lists (binary-appended or ASCII, as
 `mistfall simulate` writes them). 2D runs: an x-y scatter; 3D runs: a side view (x-z) and a top view (x-y)
-side by side. Wall and dummy particles are grey (escaped particles are not drawn); fluid particles are
+side by side. Wall and dummy particles are grey (escaped particles are not drawn), entrained bubble points
+(numerics.entrained_bubble_diameter) black rings; fluid particles are
 coloured by the chosen field (--color category: the six categories of `mistfall classify`, inflow water dark
 grey). Writes DIR/frame_NNNNN.png (NNNNN = the frame's index in frames.pvd) and,
 with --diagnostics, DIR/diagnostics.png (max speed, kinetic energy and PPE iterations against time).
@@ -251,6 +252,7 @@ def plot_frame(path, out_png, title, pvd_time, field, dimension, spacing, dpi):
     kind = arrays["kind"]
     fluid = (kind == KIND_FLUID) | (kind == KIND_INFLOW)  # inflow buffers are water driven at the inflow speed
     solid = (kind == KIND_WALL) | (kind == KIND_DUMMY)
+    point = kind == KIND_POINT  # entrained bubbles moved as points (numerics.entrained_bubble_diameter): black rings
     values, label, cmap, limits = colour_values(arrays, field, path)
     vmin, vmax = limits if limits else (None, None)
     if dimension == 2:
@@ -270,22 +272,25 @@ def plot_frame(path, out_png, title, pvd_time, field, dimension, spacing, dpi):
     for ax, (a, b, la, lb, view_title) in zip(axes[0], views):
         walls = ax.scatter(x[solid, a], x[solid, b], c="0.65", marker="s", linewidths=0)
         sc = ax.scatter(x[fluid, a], x[fluid, b], c=values[fluid], cmap=cmap, vmin=vmin, vmax=vmax, linewidths=0)
-        drawn.append((ax, walls, sc))
+        rings = ax.scatter(x[point, a], x[point, b], facecolors="none", edgecolors="k", linewidths=0.6)
+        drawn.append((ax, walls, sc, rings))
         ax.set_aspect("equal")
         ax.set_xlabel(la)
         ax.set_ylabel(lb)
         if view_title:
             ax.set_title(view_title)
     fig.colorbar(sc, ax=list(axes[0]), label=label, shrink=0.8)
-    fig.suptitle(f"{title}   t = {time:.4f} s   ({int(fluid.sum())} fluid particles)")
+    points_note = f", {int(point.sum())} entrained bubble points" if point.any() else ""
+    fig.suptitle(f"{title}   t = {time:.4f} s   ({int(fluid.sum())} fluid particles{points_note})")
     # Marker size = particle spacing on screen (at least 1 point), known once the layout has run.
     fig.canvas.draw()
-    for ax, walls, fluid_dots in drawn:
+    for ax, walls, fluid_dots, rings in drawn:
         x0, x1 = ax.get_xlim()
         points_per_metre = ax.bbox.width * 72.0 / fig.dpi / abs(x1 - x0)
         diameter = spacing * points_per_metre
         walls.set_sizes([max(1.0, 0.8 * diameter) ** 2])
         fluid_dots.set_sizes([max(1.0, 0.95 * diameter) ** 2])
+        rings.set_sizes([max(1.0, 0.8 * diameter) ** 2])
     save(fig, out_png, dpi)
 
 
