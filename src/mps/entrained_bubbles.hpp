@@ -30,14 +30,12 @@
 // The Du_l/Dt a point reads holds the water's response to its own force (the self-induced disturbance of two-way
 // point coupling): in still water the slip is 10 % under the terminal speed (tests/test_entrained_bubbles.cpp).
 //
-// A point whose liquid number density falls below kReleaseFraction n0 has reached the surface or left the water: it
-// becomes a gas particle where it is, with its velocity, and the water particle nearest to it is removed (the water
-// gives back the volume it kept, where the bubbles leave it). A first build turned that water particle into the gas
-// instead: a gas particle in the water's surface row, which the liquid system sees as a hole in its free surface.
-// The removed particle's momentum leaves with it: handing it to the water around, as a trial build did, adds kinetic
-// energy (u_j given to a neighbour moving like it doubles the pair's energy), and waterfall_small's fastest particle
-// reached 15-20 m/s within 1 s with it (11 m/s at most over 8.5 s without). Water particles less points is the
-// water's count throughout, and gas particles plus points the gas's.
+// A point whose liquid number density falls below kReleaseFraction n0 has reached the surface or left the water: the
+// water particle nearest to it becomes gas with the point's velocity (the water gives the volume back where the
+// bubbles leave it) and the point is removed. That particle's momentum leaves the water with it: handing it to the
+// water around, as a trial build did, adds kinetic energy (u_j given to a neighbour moving like it doubles the pair's
+// energy), and waterfall_small's fastest particle reached 15-20 m/s within 1 s with it (11 m/s at most over 8.5 s
+// without); water particles less points is the water's count throughout, and gas particles plus points the gas's.
 // A point is not moved closer than l0/2 to a wall or dummy particle (the part of its step towards one is taken
 // away). The points are processed serially in index order: the result does not depend on the
 // thread count.
@@ -100,9 +98,9 @@ struct EntrainedBubbleModel {
 struct EntrainedBubbleCounts {
   std::size_t made = 0;      // gas particles that became points in the step
   std::size_t released = 0;  // points that returned to the gas at the surface
-  std::size_t unpaired = 0;  // ... of which found no water particle to give back the volume
+  std::size_t unpaired = 0;  // ... of which became gas particles themselves (no water particle to give the volume)
   std::size_t wall_stops = 0;  // point steps shortened next to a wall
-  std::vector<std::uint64_t> returned_water_ids;  // the water particles to remove (the volume the points return)
+  std::vector<std::uint64_t> released_ids;  // the points to remove (their gas is now a surface particle's)
 };
 
 template <int D>
@@ -139,12 +137,15 @@ class EntrainedBubbles {
           const double r = (p.position[j] - p.position[b]).squaredNorm();
           if (nearest < 0 || r < closest) nearest = j, closest = r;
         });
-        p.kind[b] = ParticleKind::Fluid;  // the point is the gas again, where it is, with its velocity
-        p.pressure[b] = 0.0;
-        if (nearest >= 0)
-          counts.returned_water_ids.push_back(p.id[nearest]);
-        else  // no water particle near to take the volume from
+        if (nearest >= 0) {
+          p.phase[nearest] = Phase::Gas;
+          p.enclosed[nearest] = 0;
+          p.velocity[nearest] = p.velocity[b];  // the gas leaves with the bubbles' velocity
+          counts.released_ids.push_back(p.id[b]);
+        } else {  // no water particle near to take the volume from: the point is the gas
+          p.kind[b] = ParticleKind::Fluid;
           ++counts.unpaired;
+        }
         ++counts.released;
         continue;
       }

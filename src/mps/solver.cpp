@@ -236,7 +236,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     const std::int64_t outflow = removeOutflow<D>(state_.particles, config_);
     report_.removed += outflow;
     state_.removed += outflow;
-    removeReturnedWater();
+    removeReleasedPoints();
   }
   const bool reached = until - state_.time <= dt;
   state_.time = reached ? until : state_.time + dt;

@@ -168,7 +168,7 @@ class MpsSolver {
   void riseEntrainedGas(double dt);
   bool entrainedPoints() const { return config_.numerics.entrained_bubble_diameter > 0.0; }
   void moveEntrainedBubbles(double dt);
-  void removeReturnedWater();
+  void removeReleasedPoints();
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
   void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
   void solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -205,7 +205,7 @@ class MpsSolver {
   // water's material acceleration over the step).
   std::unique_ptr<EntrainedBubbles<D>> entrained_bubbles_;
   std::vector<Vec<D>> start_velocity_;
-  std::vector<std::uint64_t> returned_water_;  // ids of the water particles released points return, removed at the end
+  std::vector<std::uint64_t> released_points_;  // ids of the points released in the step, removed at its end
   PressureSystem system_;
   LumpedPressureSystem lumped_;
   Eigen::VectorXd pressure_unknowns_;

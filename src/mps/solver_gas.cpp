@@ -248,25 +248,26 @@ void MpsSolver<D>::moveEntrainedBubbles(double dt) {
     regions_.region_of.resize(p.size(), -1);
     regions_.enclosed_particle.resize(p.size(), 0);
   }
-  returned_water_ = std::move(counts.returned_water_ids);
+  released_points_ = std::move(counts.released_ids);
   report_.bubble_points_made = counts.made;
   report_.bubble_points_released = counts.released;
   report_.bubble_point_wall_stops = counts.wall_stops;
   report_.bubble_points_unpaired = counts.unpaired;
 }
 
-// The water particles that gave back the volume of the points released this step leave the arrays, after the open
-// boundaries' own removals (particle indices are not used again in the step).
+// The points released at the surface this step leave the arrays (their gas is a surface particle's now), after the
+// open boundaries' own removals (particle indices are not used again in the step).
 template <int D>
-void MpsSolver<D>::removeReturnedWater() {
-  if (returned_water_.empty()) return;
+void MpsSolver<D>::removeReleasedPoints() {
+  if (released_points_.empty()) return;
   auto& p = state_.particles;
-  std::sort(returned_water_.begin(), returned_water_.end());
+  std::sort(released_points_.begin(), released_points_.end());
   std::vector<char> remove(p.size(), 0);
   for (std::size_t i = 0; i < p.size(); ++i)
-    remove[i] = std::binary_search(returned_water_.begin(), returned_water_.end(), p.id[i]);
+    remove[i] = p.kind[i] == ParticleKind::Point &&
+                std::binary_search(released_points_.begin(), released_points_.end(), p.id[i]);
   p.erase(remove);
-  returned_water_.clear();
+  released_points_.clear();
 }
 
 // The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp), unless numerics.bubble_gas_motion =
@@ -284,7 +285,7 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
   template bool MpsSolver<D>::mirroredLiquid(std::size_t) const;         \
   template void MpsSolver<D>::riseEntrainedGas(double);     \
   template void MpsSolver<D>::moveEntrainedBubbles(double); \
-  template void MpsSolver<D>::removeReturnedWater();        \
+  template void MpsSolver<D>::removeReleasedPoints();       \
   template void MpsSolver<D>::moveBubbleGas(double);
 MISTFALL_INSTANTIATE(2)
 MISTFALL_INSTANTIATE(3)
