@@ -49,7 +49,8 @@ int main(int argc, char** argv) {
                   "`category` array to the frames, writes categories.csv");
   classify->footer(
       "Categories: 1 liquid bulk, 2 liquid surface, 3 droplet, 4 gas bulk, 5 gas surface, 6 bubble; 0 for walls,\n"
-      "dummies, escaped and inflow particles. Liquid and gas are classified separately from the number density of\n"
+      "dummies, escaped and inflow particles; 6 for an entrained bubble point (numerics.entrained_bubble_diameter).\n"
+      "Liquid and gas are classified separately from the number density of\n"
       "their own particles (plus walls) and its gradient; the thresholds are the case's [classify] table\n"
       "(docs/case-file.md), read from RUN_DIR/case.toml. Each RUN_DIR/frames/frame_NNNNN.vtp is rewritten in place\n"
       "(atomically, same format, the arrays simulate writes kept bit for bit); RUN_DIR/categories.csv gets one\n"
