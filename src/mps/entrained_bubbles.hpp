@@ -76,7 +76,7 @@ struct EntrainedBubbleModel {
   }
   // C_D Re of Tomiyama et al. (1998), pure water: finite as Re -> 0 (24).
   double dragTimesReynolds(double reynolds) const {
-    const double viscous = std::min(24.0 * (1.0 + 0.15 * std::pow(reynolds, 0.687)), 72.0);
+    const double viscous = std::min(24.0 * dragCorrection(reynolds), 72.0);  // eq. (19)'s branch
     const double eo = eotvos();
     return std::max(viscous, 8.0 / 3.0 * eo / (eo + 4.0) * reynolds);
   }
