@@ -152,7 +152,8 @@ class EntrainedBubbles {
         ++counts.released;
         continue;
       }
-      const Vec3 ub = to3(p.velocity[b]), ul = to3(l.velocity), al = to3(l.acceleration), g = to3(gravity_);
+      const Vec3 ub = padded<D>(p.velocity[b]), ul = padded<D>(l.velocity), al = padded<D>(l.acceleration),
+                 g = padded<D>(gravity_);
       const double r = model_.densityRatio(), cm = model_.added_mass;
       const Vec3 forcing = ((1.0 + cm) * al + (r - 1.0) * g) / (r + cm);
       const MotionResult m = advanceRelaxing(ub, ul, forcing, dt, [&](double s) { return model_.relaxationTime(s); });
@@ -162,8 +163,8 @@ class EntrainedBubbles {
                         (model_.gas_density - model_.liquid_density) * volume * g;
       const Vec3 on_water = -(drag + model_.liquid_density * cm * volume * (al - dub));
       for (std::size_t k = 0; k < near.size(); ++k)
-        p.velocity[near[k]] += from3(on_water) * (dt * share[k] / mass);
-      Vec<D> step = from3(m.displacement), velocity = from3(m.velocity);
+        p.velocity[near[k]] += on_water.head<D>() * (dt * share[k] / mass);
+      Vec<D> step = m.displacement.head<D>(), velocity = m.velocity.head<D>();
       counts.wall_stops += keepOffWalls(p, p.position[b], step, velocity);
       p.position[b] += step;
       p.velocity[b] = velocity;
@@ -190,16 +191,6 @@ class EntrainedBubbles {
     Vec<D> velocity = Vec<D>::Zero(), acceleration = Vec<D>::Zero();
   };
 
-  static Vec3 to3(const Vec<D>& v) {
-    Vec3 w = Vec3::Zero();
-    for (int k = 0; k < D; ++k) w[k] = v[k];
-    return w;
-  }
-  static Vec<D> from3(const Vec3& w) {
-    Vec<D> v;
-    for (int k = 0; k < D; ++k) v[k] = w[k];
-    return v;
-  }
   std::int64_t key(const Eigen::Matrix<std::int64_t, D, 1>& c) const {
     std::int64_t k = 0;
     for (int d = 0; d < D; ++d) k = k * 2000003 + c[d];

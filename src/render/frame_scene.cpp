@@ -15,13 +15,6 @@ namespace {
 constexpr int kMinSheetDroplets = 6;  // droplets in a linked chain that make it a sheet
 constexpr double kFoamReach = 1.5;    // [l0] a surface particle this close to air in the water is foam
 
-template <int D>
-Vec<3> padded(const Vec<D>& x) {
-  Vec<3> v = Vec<3>::Zero();
-  v.head<D>() = x;
-  return v;
-}
-
 // True when the segment from `from` to `to` passes through the box (slab test).
 bool segmentHitsBox(const std::array<double, 3>& from, const std::array<double, 3>& to, const Box& b) {
   double t0 = 0.0, t1 = 1.0;
