@@ -178,9 +178,11 @@ void MpsSolver<D>::correctGas(double dt) {
   const double limit = config_.numerics.gas_correction_limit * constants_.l0 / config_.numerics.dt_max;
   const double speed_limit = config_.numerics.gas_speed_limit;
   std::size_t capped = 0, correction_cuts = 0, speed_cuts = 0;
+  // The vents' gas is moved by its vent at the end of the step (gas_vent.hpp: its column's velocity replaces
+  // whatever a correction gave it), so it takes no correction here, and no guard counts it.
 #pragma omp parallel for schedule(static) reduction(+ : capped, correction_cuts, speed_cuts)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (!roles_.inGasSystem(i)) continue;
+    if (!roles_.inGasSystem(i) || isVentGas(i)) continue;
     change[i] = -dt / rho * (config_.numerics.gas_stabilised
                                  ? stabilisedGasGradient(i)
                                  : gradientAt<D>(i, p.position, gas_pressure_, near_neighbours_, constants_,
