@@ -162,7 +162,8 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "inflow,created,removed,inflow_rate,outflow_rate,gas_capped,collisions,gradient_fallbacks,thin_support,"
       "liquid_volume,gas_volume,gas_compression,gas_pressure,dispersed_gas,entrained_swaps,regularised_rows,"
       "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift,"
-      "vented_in,vented_out,shift_cuts,bubble_points,points_made,points_released,point_wall_stops,points_unpaired",
+      "vented_in,vented_out,shift_cuts,bubble_points,points_made,points_released,point_wall_stops,points_unpaired,"
+      "gap_water_floors",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -181,6 +182,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.gas_correction_capped = 17; r.gas_speed_capped = 18; r.largest_shift = 0.03125;
   r.vented_in = 21; r.vented_out = 22; r.shift_cuts = 23;
   r.bubble_points = 24; r.points_made = 25; r.points_released = 26; r.point_wall_stops = 27; r.points_unpaired = 28;
+  r.gap_water_floors = 29;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -228,6 +230,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(26, rows[0].points_released);
   EXPECT_EQ(27, rows[0].point_wall_stops);
   EXPECT_EQ(28, rows[0].points_unpaired);
+  EXPECT_EQ(29, rows[0].gap_water_floors);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -167,6 +167,10 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
+  // coupling = "one_equation" (experimental): water short of neighbours (n* < surface_threshold n0) next to air holds
+  // at least the air's pressure there (gap_water_floor.hpp: the gap is unresolved air, which cannot pull on the water;
+  // without it the water going over a brink clings to the bed's face). A guard, counted (gap_water_floors).
+  bool gap_water_floor = false;
   // The operators of the gas system (solver_gas.cpp; docs/two-phase.md). false ("paper"): the paper's MPS, wall
   // particles next to gas carry unknowns (their rows short of neighbours) and the gradient is the minimum-neighbour
   // form; still air under gravity drifts. true ("stabilised", experimental): mirrored walls (wall_mirror.hpp), the

@@ -143,7 +143,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet"});
+                "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
+                "gap_water_floor"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -206,6 +207,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");
+  rd.boolean(nm, np, "gap_water_floor", n.gap_water_floor);
+  if (n.gap_water_floor && n.coupling != NumericsConfig::Coupling::OneEquation)
+    rd.fail("numerics.gap_water_floor = true is a condition of the one equation's water rows (the two systems' water "
+            "already holds p = 0 at its free surface); allowed with numerics.coupling = \"one_equation\", or false");
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.entrained_bubble_diameter > 0.0)
     rd.fail("numerics.entrained_bubble_diameter = " + fmt(n.entrained_bubble_diameter) + " needs numerics.coupling = "
             "\"two_systems\" (the one equation gives every gas particle its own momentum); allowed 0 with one_equation");

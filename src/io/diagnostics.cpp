@@ -106,6 +106,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::points_released>("points_released"),
     column<&DiagnosticsRow::point_wall_stops>("point_wall_stops"),
     column<&DiagnosticsRow::points_unpaired>("points_unpaired"),
+    column<&DiagnosticsRow::gap_water_floors>("gap_water_floors"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

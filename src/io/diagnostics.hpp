@@ -64,6 +64,9 @@ struct DiagnosticsRow {
   double largest_shift = 0;
   // Particle shifts shortened to numerics.shift_limit since the previous row (particle-steps; a guard).
   std::int64_t shift_cuts = 0;
+  // Water pressures raised to the air's beside them by numerics.gap_water_floor since the previous row
+  // (particle-steps; a guard of the one equation, mps/gap_water_floor.hpp).
+  std::int64_t gap_water_floors = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -87,6 +87,7 @@ struct StepReport {
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
+  std::size_t gap_water_floors = 0;    // water pressures raised to the air's by numerics.gap_water_floor
 };
 
 template <int D>
@@ -97,6 +98,8 @@ class MpsSolver {
 
   // Advances one time step, never past `until` (so output times are hit exactly). Throws DivergenceError.
   const StepReport& step(double until);
+  // What the last step did (the same report step() returned).
+  const StepReport& lastReport() const { return report_; }
 
   const MpsConstants& constants() const { return constants_; }
   // Drops what the solver keeps from step to step beyond the state (the pressure solves' AMG hierarchies): the

@@ -15,6 +15,7 @@
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
 #include "mps/gas_vent.hpp"
+#include "mps/gap_water_floor.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -123,6 +124,10 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   for (std::int64_t i = 0; i < n; ++i)
     if (inEquation(i)) p.pressure[i] = surface_pressure_[i];
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) p.pressure[system_.particle_of[r]] = pressure_unknowns_[r];
+  if (config_.numerics.gap_water_floor)  // gap_water_floor.hpp
+    report_.gap_water_floors = floorGapWaterPressure<D>(p, near_neighbours_, constants_.re_number_density, beta_n0,
+                                                        phases_[static_cast<int>(Phase::Gas)].density, gravity_,
+                                                        p.pressure);
 }
 
 // u' = -dt <(1/rho) grad p>, u = u* + u', r = r* + dt u', for every fluid particle of both phases.
