@@ -237,7 +237,8 @@ TEST(OneEquation, ChannelUnderClosedAirCarriesTheInflowsDischarge) {
 // through the air into the pit. Nothing pushes a falling sheet sideways but the air's pressure, tens of pascals, so
 // it keeps the brink's horizontal speed. Over 0.2-0.3 s the water 1-6 cm below the brink moves out at 0.77 m/s (the
 // water over the bed's last 2 cm at 0.64 m/s) and lies 5 cm out from the bed's face (x = 0.451 m). Without the floor
-// the water at the brink held -0.4 to -1.3 kPa and turned down the bed's face: -0.045 m/s at x = 0.413 m.
+// it turned down the bed's face, held there by the tension of the water at the edge (on waterfall_small: -0.4 to
+// -1.3 kPa against the air's -0.14 kPa): -0.045 m/s at x = 0.413 m.
 TEST(OneEquation, WaterOverABrinkSpringsClearOfItsFaceWithTheGapFloor) {
   std::string text = closedChannelCase();
   text.replace(text.find("gas_domain = \"closed\""), std::string("gas_domain = \"closed\"").size(),
