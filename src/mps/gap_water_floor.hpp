@@ -17,6 +17,7 @@
 #include <limits>
 #include <vector>
 
+#include "mps/enclosed_gas.hpp"
 #include "mps/pair_loop.hpp"
 #include "mps/particles.hpp"
 
@@ -29,7 +30,7 @@ std::size_t floorGapWaterPressure(const Particles<D>& p, const NeighborList& nl,
                                   double gas_density, const Vec<D>& gravity, std::vector<double>& pressure) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<double> floor(n, -std::numeric_limits<double>::infinity());
-  auto air = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Gas; };
+  auto air = [&](std::int32_t j) { return isGas(p.kind[j], p.phase[j]); };
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Liquid || !(p.number_density[i] < beta_n0)) continue;
