@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "case/case_file.hpp"
@@ -110,10 +111,10 @@ TEST(EntrainedBubbles, RiseThroughStillWaterAndRejoinTheAir) {
   }
   ASSERT_EQ(samples, 8 * kPockets);
   slip /= samples;
-  // Measured 0.208 m/s, 10 % under the terminal 0.232: the water's acceleration the point reads holds the water's
-  // response to the point's own force (the self-induced disturbance of two-way point coupling). Without the force
-  // returned the slip is 0.2315; with it but without the fluid's acceleration in eq. (18), 0.227.
-  EXPECT_NEAR(slip, terminal, 0.15 * terminal) << "mean slip over 0.05-0.12 s";
+  // Measured 0.2372 m/s, 2.4 % over the terminal 0.2316, with the point's last push added back to the water's
+  // acceleration it reads (entrained_bubbles.hpp). Without that, 0.208 m/s (10 % under: the projection's answer to
+  // the point's own force read as the water's acceleration); without the force returned, 0.2315.
+  EXPECT_NEAR(slip, terminal, 0.05 * terminal) << "mean slip over 0.05-0.12 s";
   // The rise: the buoyancy's work on each point up to where it is released, then the water's kinetic energy.
   const double work_per_metre = (model.liquid_density - model.gas_density) * model.gravity * l0 * l0;
   double work = 0.0;
@@ -155,9 +156,10 @@ TEST(EntrainedBubbles, TheWaterTakesTheForceThePointFeels) {
   const std::size_t b = p.size() - 1;
   const MpsConstants c = referenceConstants(2, l0, 2.1, 2.1);
   EntrainedBubbles<2> points(model, l0, re, c.n0, g);
+  std::map<std::uint64_t, Vec<2>> forces;
   const std::vector<Vec<2>> start = p.velocity;
   const Vec<2> ub0 = p.velocity[b];
-  const EntrainedBubbleCounts counts = points.advance(p, start, std::vector<char>(p.size(), 0), dt);
+  const EntrainedBubbleCounts counts = points.advance(p, start, std::vector<char>(p.size(), 0), dt, forces);
   EXPECT_EQ(counts.released, 0u);
   Vec<2> water = Vec<2>::Zero();
   for (std::size_t j = 0; j < b; ++j) water += model.liquid_density * l0 * l0 * p.velocity[j];
@@ -233,7 +235,8 @@ TEST(EntrainedBubbles, ReleaseAtTheSurfaceTurnsTheNearestWaterIntoGas) {
   const std::vector<Vec<2>> before = p.velocity;
   const MpsConstants c = referenceConstants(2, l0, 2.1, 2.1);
   EntrainedBubbles<2> points(model, l0, re, c.n0, Vec<2>(0.0, -9.81));
-  const EntrainedBubbleCounts counts = points.advance(p, p.velocity, std::vector<char>(p.size(), 0), dt);
+  std::map<std::uint64_t, Vec<2>> forces;
+  const EntrainedBubbleCounts counts = points.advance(p, p.velocity, std::vector<char>(p.size(), 0), dt, forces);
   ASSERT_EQ(counts.released, 1u);
   ASSERT_EQ(counts.released_ids.size(), 1u);
   EXPECT_EQ(counts.released_ids[0], p.id[b]);

@@ -306,6 +306,8 @@ SimulationState<D> sampleState() {
   s.vented_in = 3456;
   s.vented_out = 6543;
   s.particles = sampleParticles<D>(101);
+  s.point_forces[3] = Vec<D>::Constant(1.0 / 3.0);
+  s.point_forces[77] = Vec<D>::Constant(-2e-7 / 9.0);
   return s;
 }
 
@@ -325,6 +327,11 @@ void checkpointRoundTrip() {
   EXPECT_EQ(s.removed, r.removed);
   EXPECT_EQ(s.vented_in, r.vented_in);
   EXPECT_EQ(s.vented_out, r.vented_out);
+  ASSERT_EQ(s.point_forces.size(), r.point_forces.size());
+  for (const auto& [id, force] : s.point_forces) {
+    ASSERT_EQ(r.point_forces.count(id), 1u) << "point " << id;
+    EXPECT_EQ(0, std::memcmp(force.data(), r.point_forces.at(id).data(), sizeof(Vec<D>))) << "point " << id;
+  }
   expectSameParticles(s.particles, r.particles);
 }
 

@@ -21,8 +21,8 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 5;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids,
-                                       // 5 the vents' counts
+constexpr std::uint32_t kVersion = 6;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids,
+                                       // 5 the vents' counts, 6 the entrained points' last forces
 constexpr std::uint32_t kOldestVersion = 2;  // still read (no fingerprint)
 constexpr std::uint64_t kMaxFingerprint = 1 << 24;
 
@@ -191,6 +191,11 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
       w.raw(p.enclosed.data(), n);
       w.raw(p.id.data(), n * sizeof(std::uint64_t));
     }
+    w.value(static_cast<std::uint64_t>(s.point_forces.size()));
+    for (const auto& [id, force] : s.point_forces) {
+      w.value(id);
+      w.raw(force.data(), sizeof(Vec<D>));
+    }
     const std::uint64_t sum = w.checksum();
     os.write(reinterpret_cast<const char*>(&sum), sizeof(sum));
     os.write(kEndMarker, sizeof(kEndMarker));
@@ -241,6 +246,18 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
     for (std::size_t i = 0; i < n; ++i) p.id[i] = i;
   }
   p.next_id = h.next_id;
+  if (h.version >= 6) {
+    const auto forces = r.value<std::uint64_t>();
+    if (forces > r.remaining() / (sizeof(std::uint64_t) + sizeof(Vec<D>)))
+      fail(file, "file is truncated (bad count of point forces)");
+    for (std::uint64_t k = 0; k < forces; ++k) {
+      const auto id = r.value<std::uint64_t>();
+      Vec<D> force;
+      r.raw(force.data(), sizeof(Vec<D>));
+      if (id >= p.next_id || !force.allFinite()) fail(file, "invalid point force");
+      s.point_forces[id] = force;
+    }
+  }
   const std::uint64_t expected = r.checksum();
   const auto stored = r.value<std::uint64_t>();
   char end[sizeof(kEndMarker)];

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 
 #include "mps/particles.hpp"
 
@@ -18,6 +19,9 @@ struct SimulationState {
   std::int64_t vented_in = 0;   // gas particles created by the vents since the start (gas_vent.hpp)
   std::int64_t vented_out = 0;  // gas particles removed by the vents since the start
   Particles<D> particles;
+  // The force each entrained point (entrained_bubbles.hpp) put on the water over its last step, by particle id: the
+  // next step takes its echo out of the water's acceleration the point reads.
+  std::map<std::uint64_t, Vec<D>> point_forces;
 };
 
 }  // namespace mistfall

@@ -243,7 +243,7 @@ void MpsSolver<D>::moveEntrainedBubbles(double dt) {
   for (std::size_t i = 0; i < p.size() && i < regions_.enclosed_particle.size(); ++i)
     candidate[i] = regions_.enclosed_particle[i] && !roles_.enclosed_gas[i] && !isVentGas(i);
   const std::size_t before = p.size();
-  EntrainedBubbleCounts counts = entrained_bubbles_->advance(p, start_velocity_, candidate, dt);
+  EntrainedBubbleCounts counts = entrained_bubbles_->advance(p, start_velocity_, candidate, dt, state_.point_forces);
   if (p.size() > before) {  // the new points take no part in the rest of the step's operators
     roles_.extendForLiquid(p.size());
     for (std::size_t i = before; i < p.size(); ++i) roles_.in_liquid_system[i] = 0;
