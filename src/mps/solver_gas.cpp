@@ -210,13 +210,14 @@ void MpsSolver<D>::correctGas(double dt) {
     p.position[i] += dt * change[i];
   }
   // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
-  // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced).
+  // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced), but a vent's gas, which its
+  // column moves (gas_vent.hpp).
   if (config_.numerics.gas_stabilised && config_.numerics.particle_shifting > 0.0) {
     std::vector<Vec<D>> shift(n, Vec<D>::Zero());
     auto all = [&](std::int32_t j) { return isActive(p.kind[j]); };
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < n; ++i) {
-      if (!roles_.open_gas[i]) continue;
+      if (!roles_.open_gas[i] || isVentGas(static_cast<std::size_t>(i))) continue;
       shift[i] = shiftingDisplacement<D>(i, p.position, near_neighbours_, constants_, config_.numerics.particle_shifting,
                                          p.velocity[i], dt, Vec<D>::Zero(), all);
     }

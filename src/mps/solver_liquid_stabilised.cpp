@@ -105,8 +105,8 @@ void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>& last_gradient)
 }
 
 // Particle shifting (particle_shifting.hpp) of the fluid particles the correction moved: the liquid system's
-// (walls in the sum), or every fluid particle of the one equation (both phases, walls in the sum). Jacobi-style: all
-// displacements from the positions before the stage.
+// (walls in the sum), or every fluid particle of the one equation (both phases, walls in the sum) but a vent's gas,
+// which its column moves (gas_vent.hpp). Jacobi-style: all displacements from the positions before the stage.
 template <int D>
 void MpsSolver<D>::shiftParticles(double dt) {
   auto& p = state_.particles;
@@ -122,6 +122,7 @@ void MpsSolver<D>::shiftParticles(double dt) {
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
     if (!one && (!roles_.in_liquid_system[i] || roles_.enclosed_gas[i])) continue;
+    if (isVentGas(static_cast<std::size_t>(i))) continue;
     const Vec<D>& normal = surface_tangents_.normal[i];
     if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
     shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum);
