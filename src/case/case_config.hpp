@@ -64,6 +64,9 @@ struct Vent {
   Box box;
   int axis = 0;  // the vent's axis
   int sign = 1;  // +1: the outer face is box.max[axis] (outward along +axis), -1: box.min[axis]
+  // The pressure of the air it lets in (gas_vent.hpp): the ambient's total pressure (the air drawn from rest, the
+  // default), or its static pressure.
+  enum class Inflow { TotalPressure, Static } inflow = Inflow::TotalPressure;
 };
 
 struct PhaseProperties {

@@ -4,7 +4,8 @@
 // (2009, "Permeable and non-reflecting boundary conditions in SPH", IJNMF 61) and Tafuni, Dominguez, Vacondio &
 // Crespo (2018, "A versatile algorithm for the treatment of open boundary conditions in SPH GPU models", CMAME 342):
 //  * the pressure is imposed: the ambient air at rest, p_a(x) = rho_g g.x (zero at the case's origin), is a
-//    Dirichlet boundary of the gas system (solver_gas.cpp) on the vent's gas particles;
+//    Dirichlet boundary of the gas system (solver_gas.cpp) on the vent's gas particles, less the entering air's
+//    dynamic pressure where a column enters (ventPressure, below);
 //  * the velocity is extrapolated with zero normal gradient: each lattice column of the vent (its particles nearest
 //    one lattice line along n) moves as one, along n, at the mean normal velocity u_n of the domain's gas within
 //    2 l0 in front of the vent's inner face (0 where there is none); in its neighbours' divergence the vent's gas
@@ -32,6 +33,22 @@ namespace mistfall {
 template <int D>
 double ambientPressure(const Vec<D>& x, double gas_density, const Vec<D>& gravity) {
   return gas_density * gravity.dot(x);
+}
+
+// The pressure a vent's gas holds (a Dirichlet value of the pressure equation), from its column's velocity u: where
+// the column leaves the domain (u.n >= 0), the ambient's p_a(x); where it enters, with `inflow = "total_pressure"`,
+// the ambient air's total pressure less the dynamic pressure of the entering air,
+//   p = p_a(x) - rho_g (u.n)^2 / 2      (u.n < 0),
+// the air drawn in from rest outside without loss (Bernoulli along a streamline from the still ambient): the
+// entrainment condition of an opening to the atmosphere (in OpenFOAM, totalPressure with
+// pressureInletOutletVelocity). With the static pressure p_a on entry (`inflow = "static"`, the first version) a
+// suction of a few pascals draws air in with nothing to bound its speed: at l0 = 5 mm a column at the edge of
+// waterfall.toml's roof vent fed on the air it drew and reached 7.8 m/s within 0.2 s (docs/two-phase.md).
+template <int D>
+double ventPressure(const Vec<D>& x, const Vec<D>& u, const Vent& vent, double gas_density, const Vec<D>& gravity) {
+  const double un = vent.sign * u[vent.axis];
+  const bool total = vent.inflow == Vent::Inflow::TotalPressure;
+  return ambientPressure<D>(x, gas_density, gravity) - (total && un < 0.0 ? 0.5 * gas_density * un * un : 0.0);
 }
 
 // Which vent each particle is in (-1: none), by position.
