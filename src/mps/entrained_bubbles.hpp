@@ -131,7 +131,10 @@ class EntrainedBubbles {
     bool any = false;
     for (std::size_t i = 0; i < p.size() && !any; ++i)
       any = p.kind[i] == ParticleKind::Point || (i < candidate.size() && candidate[i]);
-    if (!any) return counts;
+    if (!any) {
+      last_force.clear();
+      return counts;
+    }
     bin(p);
     const double mass = model_.liquid_density * std::pow(l0_, D);  // of a liquid particle
     std::vector<std::int32_t> near;
