@@ -25,6 +25,7 @@
 #include "mps/bubble_pressure.hpp"
 #include "mps/corrected_gradient.hpp"
 #include "mps/enclosed_gas.hpp"
+#include "mps/gas_vent.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/phase_coupling.hpp"
 #include "mps/entrained_bubbles.hpp"
@@ -166,6 +167,12 @@ class MpsSolver {
     const auto& p = state_.particles;
     return i < vent_at_start_.size() && vent_at_start_[i] >= 0 && p.kind[i] == ParticleKind::Fluid &&
            p.phase[i] == Phase::Gas;
+  }
+  // The Dirichlet value such a particle holds (gas_vent.hpp's ventPressure: the ambient's, less the entering air's
+  // dynamic pressure where its column enters), for gas of density `density`.
+  double ventGasPressure(std::size_t i, double density) const {
+    const auto& p = state_.particles;
+    return ventPressure<D>(p.position[i], p.velocity[i], config_.vents[vent_at_start_[i]], density, gravity_);
   }
   void moveBubbleGas(double dt);
   void riseEntrainedGas(double dt);

@@ -72,7 +72,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       ++report_.regularised_rows;
     }
   }
-  // The vents' gas holds the ambient pressure (gas_vent.hpp's ventPressure): a Dirichlet boundary of the system; with
+  // The vents' gas holds the ambient pressure (ventGasPressure, solver.hpp): a Dirichlet boundary of the system; with
   // numerics.vent_outlet = "zero_gradient" it has no part in its neighbours' divergence.
   problem_.boundary_value.clear();
   auto vented = [&](std::int64_t i) { return isVentGas(static_cast<std::size_t>(i)) && roles_.open_gas[i]; };
@@ -82,8 +82,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       if (vented(i) && problem_.takes_part[i]) {
         problem_.unknown[i] = 0;
         if (config_.numerics.vent_zero_gradient) problem_.carries_velocity[i] = 0;
-        problem_.boundary_value[i] = ventPressure<D>(p.position[i], p.velocity[i], config_.vents[vent_at_start_[i]],
-                                                     gas.density, gravity_);
+        problem_.boundary_value[i] = ventGasPressure(static_cast<std::size_t>(i), gas.density);
       }
   }
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};

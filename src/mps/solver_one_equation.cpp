@@ -92,11 +92,9 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     if (!problem_.unknown[i])
       surface_pressure_[i] = problem_.density_of[i] * surfaceParticlePressure<D>(last[i], constants_.l0);
   }
-  // The vents' gas (gas_vent.hpp's ventPressure): the ambient pressure, a Dirichlet value like a surface particle's.
+  // The vents' gas (ventGasPressure, solver.hpp): the ambient pressure, a Dirichlet value like a surface particle's.
   for (std::int64_t i = 0; i < n; ++i)
-    if (vented(i))
-      surface_pressure_[i] = ventPressure<D>(p.position[i], p.velocity[i], config_.vents[vent_at_start_[i]],
-                                             problem_.density_of[i], gravity_);
+    if (vented(i)) surface_pressure_[i] = ventGasPressure(static_cast<std::size_t>(i), problem_.density_of[i]);
   findSurfaceTangents(last);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   problem_.extra_rhs.assign(n, 0.0);
