@@ -1,7 +1,8 @@
 // The [[inflow]] and [[outflow]] tables of a case file (open boundaries, mps/open_boundaries.hpp):
 //   [[inflow]]  name, min, max (the buffer box), direction (a unit coordinate vector, e.g. [1, 0]),
 //               discharge (q > 0 [m^2/s]): the buffer's water is driven at U = q / depth along direction,
-//               depth = the box's extent along the axis of gravity.
+//               depth = the box's extent along the axis of gravity; pressure ("solved" or "harmonic": the
+//               buffer's pressure, mps/inflow_pressure.hpp).
 //   [[outflow]] name, min, max: fluid entering the box is removed.
 //   [[vent]]    name, min, max (the opening, cut through a wall), direction (outward, a unit coordinate vector):
 //               the air's opening to the ambient (mps/gas_vent.hpp).
@@ -85,7 +86,7 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table& t = *(*a)[i].as_table();
       const std::string p = "inflow[" + std::to_string(i) + "]";
-      rd.checkKeys(t, p, {"name", "min", "max", "direction", "discharge"});
+      rd.checkKeys(t, p, {"name", "min", "max", "direction", "discharge", "pressure"});
       Inflow in;
       in.name = uniqueName(rd, t, p, names);
       readBox(rd, t, p, c, in.box);
@@ -94,6 +95,7 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
         rd.fail(p + ".direction is along gravity; allowed a horizontal direction (the depth is measured along gravity)");
       rd.number(t, p, "discharge", {0.0, 100.0, true, false}, in.discharge, true);
       in.speed = in.discharge / (in.box.max[vertical] - in.box.min[vertical]);
+      if (rd.choice(t, p, "pressure", {"solved", "harmonic"}) == 1) in.pressure = Inflow::Pressure::Harmonic;
       for (const Region& r : c.regions)
         if (r.material == Material::Wall && overlap(r.box, in.box, c.dimension))
           rd.fail(p + " overlaps wall region \"" + r.name + "\"; allowed an inflow box clear of walls");

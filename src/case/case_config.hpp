@@ -48,6 +48,8 @@ struct Inflow {
   int sign = 1;            // +1: along +axis, -1: along -axis
   double discharge = 0.0;  // q [m^2/s]
   double speed = 0.0;      // U = q / depth [m/s] (set by the parser)
+  // The buffer's rows (mps/inflow_pressure.hpp): with the water's source ("solved"), or none, lap p = 0 ("harmonic").
+  enum class Pressure { Solved, Harmonic } pressure = Pressure::Solved;
 };
 
 // An outflow box removes every liquid particle that enters it (the arrays are compacted); gas passes through.

@@ -1,7 +1,7 @@
 // Open boundaries: inflow buffers and outflow boxes (the waterfall's weir inflow and pool outflow; the case file's
 // [[inflow]] and [[outflow]], case_config.hpp).
-//  * Inflow: the buffer's particles (kind Inflow) are driven at the inflow velocity U (r += dt U, u = U), like a
-//    moving wall whose pressure is solved. One that crosses the buffer's downstream face becomes Fluid. When the
+//  * Inflow: the buffer's particles (kind Inflow) are driven at the inflow velocity U (r += dt U, u = U), their
+//    pressure solved (inflow_pressure.hpp). One that crosses the buffer's downstream face becomes Fluid. When the
 //    upstream-most layer has moved so far that one more lattice layer fits behind it inside the box, that layer
 //    is created, at the box's lattice points across the flow: water enters one layer per l0 / U, so the discharge
 //    is q = U * n * l0 with n the layer's particle count (2D; n = depth / l0 gives q = U * depth).

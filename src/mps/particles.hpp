@@ -15,8 +15,8 @@ namespace mistfall {
 //  Fluid: moves, pressure solved.       Wall: fixed, pressure solved (Neumann-like boundary).
 //  Dummy: fixed, counts in number density only (fills the wall's influence region).
 //  Escaped: left the domain; frozen and ignored by every operator, still counted.
-//  Inflow: water in an inflow buffer (open_boundaries.hpp): driven at the inflow velocity, pressure solved like a
-//          wall's; it becomes Fluid when it leaves the buffer.
+//  Inflow: water in an inflow buffer (open_boundaries.hpp): driven at the inflow velocity, its pressure solved (its
+//          rows by [[inflow]] pressure, inflow_pressure.hpp); it becomes Fluid when it leaves the buffer.
 //  Point: gas below a bubble's resolution moved as a point through the water by eq. (18) (entrained_bubbles.hpp);
 //         ignored by every MPS operator; it becomes Fluid again when it reaches the surface.
 enum class ParticleKind : std::uint8_t { Fluid = 0, Wall = 1, Dummy = 2, Escaped = 3, Inflow = 4, Point = 5 };

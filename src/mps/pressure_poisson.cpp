@@ -105,7 +105,9 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
     const double compression = (number_density[i] - c.n0) / c.n0;
-    if (source.kind == PressureSource::Standard) {
+    if (!problem.sourceless.empty() && problem.sourceless[i]) {
+      sys.rhs[r] = 0.0;
+    } else if (source.kind == PressureSource::Standard) {
       sys.rhs[r] = rho / (dt * dt) * compression;
     } else {
       auto carriesVelocity = [&](std::int32_t j) { return problem.carries_velocity[j] != 0; };

@@ -48,6 +48,9 @@ struct PressureProblem {
   std::vector<double> density_of;
   std::vector<double> interface_distance;
   std::vector<double> extra_rhs;    // known terms added to row i's right-hand side (empty = none)
+  // Rows without the divergence and compression source (empty = none): an inflow buffer's driven water with
+  // `[[inflow]] pressure = "harmonic"` (inflow_pressure.hpp), whose pressure is that of a uniform flow, lap p = 0.
+  std::vector<char> sourceless;
   // The pressure a Dirichlet boundary holds (taking part, not unknown; empty = 0 for all): a gas vent's ambient
   // pressure (gas_vent.hpp). Row i's known neighbour j adds (its coefficient) * boundary_value[j] to the right.
   std::vector<double> boundary_value;

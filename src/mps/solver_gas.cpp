@@ -88,6 +88,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
   problem_.extra_rhs.clear();
+  problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)
   if (config_.numerics.gas_pressure_memory) {
     problem_.extra_rhs.assign(n, 0.0);
     for (std::int64_t i = 0; i < n; ++i)

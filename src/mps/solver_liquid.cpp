@@ -9,6 +9,7 @@
 
 #include "mps/bubble_pressure.hpp"
 #include "mps/gradient.hpp"
+#include "mps/inflow_pressure.hpp"
 #include "mps/number_density.hpp"
 #include "mps/solver.hpp"
 #include "mps/wall_mirror.hpp"
@@ -71,6 +72,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
                             hasFullNeighbourhood(i, roles_.in_liquid_system);
     }
   }
+  problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
   if (stabilised) stabilisedPressureTerms(dt);
   const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,

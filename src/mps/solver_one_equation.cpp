@@ -16,6 +16,7 @@
 #include "mps/number_density.hpp"
 #include "mps/gas_vent.hpp"
 #include "mps/gap_water_floor.hpp"
+#include "mps/inflow_pressure.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -80,6 +81,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
       if (config_.numerics.vent_zero_gradient) problem_.carries_velocity[i] = 0;
     }
   }
+  problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
   problem_.interface_distance = interfaceDistances<D>(p, neighbours_, search_.radius(), constants_.l0);
   makeThinRowsFreeSurface();  // solver_liquid_stabilised.cpp
   // The known terms, from the last step's pressure at r* (solver_liquid_stabilised.cpp, per unit density).
@@ -106,7 +108,9 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.unknown[i]) continue;
-    double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, 1.0, gravity_, dt);
+    const bool sourceless = !problem_.sourceless.empty() && problem_.sourceless[i];
+    double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, 1.0, gravity_, dt,
+                                       !sourceless);
     extra += laplacianConsistencyTerm<D>(i, p.position, neighbours_, constants_, last[i], inLaplacian);
     double surface = 0.0;
     forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, atSurface,

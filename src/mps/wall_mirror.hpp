@@ -25,14 +25,16 @@ namespace mistfall {
 inline bool isMirroredWall(ParticleKind k) { return k == ParticleKind::Wall || k == ParticleKind::Dummy; }
 
 // The walls' known part of row i (fluid particle i at r*, velocity u*): both terms above.
+// With `with_divergence` false, the hydrostatic part alone (a row without a divergence source: inflow_pressure.hpp).
 template <int D>
 double mirroredWallTerm(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<Vec<D>>& velocity,
                         const std::vector<ParticleKind>& kind, const NeighborList& nl, const MpsConstants& c,
-                        double rho, const Vec<D>& gravity, double dt) {
+                        double rho, const Vec<D>& gravity, double dt, bool with_divergence = true) {
   auto wall = [&](std::int32_t j) { return isMirroredWall(kind[j]); };
   double hydrostatic = 0.0;
   forEachPairWithin<D>(i, position, nl, c.re_laplacian, wall,
                        [&](std::int32_t, const Vec<D>& rib, double, double w) { hydrostatic += w * gravity.dot(rib); });
+  if (!with_divergence) return c.laplacianFactor() * rho * hydrostatic;
   const Vec<D> own = velocity[i] - gravity * dt;
   double divergence = 0.0;
   forEachPairWithin<D>(i, position, nl, c.re_number_density, wall,
