@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "case/case_file.hpp"
@@ -13,65 +12,22 @@
 #include "mps/inflow_pressure.hpp"
 #include "mps/solver.hpp"
 #include "support/case_text.hpp"
+#include "support/channel_case.hpp"
 
 using namespace mistfall;
 using test_support::errorOf;
 
 namespace {
 
-// A channel 5 cm deep fed by a 4 cm buffer under a gate (the channel of test_open_boundaries.cpp), l0 = 1 cm; the
-// inflow's discharge is `discharge` [m^2/s] (the water starts at q / 0.05 m), and a wall ends the channel at 0.4 m.
-std::string channelCase(const std::string& inflow_pressure, const std::string& scheme = "paper",
-                        const std::string& discharge = "0.016") {
-  char u[32];
-  std::snprintf(u, sizeof u, "%.9g", std::stod(discharge) / 0.05);
-  return R"(
-[case]
-name = "channel"
-dimension = 2
-[domain]
-min = [-0.04, -0.3]
-max = [0.64, 0.3]
-[numerics]
-scheme = ")" + scheme + R"("
-particle_spacing = 0.01
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-[output]
-end_time = 1.0
-[[region]]
-name = "water"
-material = "water"
-min = [0.04, 0.0]
-max = [0.4, 0.05]
-velocity = [)" + std::string(u) + R"(, 0.0]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.44, 0.0]
-[[region]]
-name = "back"
-material = "wall"
-min = [-0.04, 0.0]
-max = [0.0, 0.1]
-[[region]]
-name = "end"
-material = "wall"
-min = [0.4, 0.0]
-max = [0.44, 0.1]
-[[region]]
-name = "gate"
-material = "wall"
-min = [0.0, 0.05]
-max = [0.05, 0.09]
-[[inflow]]
-name = "upstream"
-min = [0.0, 0.0]
-max = [0.04, 0.05]
-direction = [1, 0]
-discharge = )" + discharge + "\n" + inflow_pressure + "\n";
+// The open-boundary tests' channel (support/channel_case.hpp) with `inflow_keys` in its [[inflow]] table.
+std::string channelCase(const std::string& inflow_keys, const std::string& scheme = "",
+                        const std::string& discharge = "0.016", bool end_wall = false) {
+  test_support::ChannelCase o;
+  o.inflow_keys = inflow_keys;
+  o.scheme = scheme;
+  o.discharge = discharge;
+  o.end_wall = end_wall;
+  return test_support::channelCaseText(o);
 }
 
 }  // namespace
@@ -108,7 +64,7 @@ TEST(InflowPressure, OnlyTheHarmonicInflowsDrivenWaterIsSourceless) {
 // still water is not exact (+-30 Pa in front of the buffer): there the harmonic buffer holds 270-370 Pa at the bed
 // row, as the solved one does (263-415).
 TEST(InflowPressure, StillWaterContinuesIntoAHarmonicBufferAtItsHydrostaticPressure) {
-  const CaseConfig c = parseCase(channelCase("pressure = \"harmonic\"", "stabilised", "1e-9"), "c.toml");
+  const CaseConfig c = parseCase(channelCase("pressure = \"harmonic\"", "stabilised", "1e-9", true), "c.toml");
   SimulationState<2> state;
   state.particles = buildParticles<2>(c);
   MpsSolver<2> solver(c, state);

@@ -14,6 +14,7 @@
 #include "mps/open_boundaries.hpp"
 #include "mps/solver.hpp"
 #include "support/case_text.hpp"
+#include "support/channel_case.hpp"
 #include "support/scratch.hpp"
 
 using namespace mistfall;
@@ -21,57 +22,10 @@ using test_support::errorOf;
 
 namespace {
 
-// A horizontal channel 5 cm deep on a floor that ends at x = 0.4; the inflow buffer (4 cm long, under a gate)
-// at its upstream end feeds q = 0.016 m^2/s (U = 0.32 m/s); the water falls off the end into an outflow box
-// (x >= 0.42 m).
-// l0 = 1 cm, water only.
 std::string channelCase(const std::string& direction = "[1, 0]") {
-  return R"(
-[case]
-name = "channel"
-dimension = 2
-[domain]
-min = [-0.04, -0.3]
-max = [0.64, 0.3]
-[numerics]
-particle_spacing = 0.01
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-[output]
-end_time = 2.0
-[[region]]
-name = "water"
-material = "water"
-min = [0.04, 0.0]
-max = [0.4, 0.05]
-velocity = [0.32, 0.0]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.4, 0.0]
-[[region]]
-name = "back"
-material = "wall"
-min = [-0.04, 0.0]
-max = [0.0, 0.1]
-[[region]]
-name = "gate"
-material = "wall"
-min = [0.0, 0.05]
-max = [0.05, 0.09]
-[[inflow]]
-name = "upstream"
-min = [0.0, 0.0]
-max = [0.04, 0.05]
-direction = )" + direction + R"(
-discharge = 0.016
-[[outflow]]
-name = "end"
-min = [0.42, -0.3]
-max = [0.64, 0.3]
-)";
+  test_support::ChannelCase o;
+  o.direction = direction;
+  return test_support::channelCaseText(o);
 }
 
 struct ChannelRun {
