@@ -363,6 +363,12 @@ TEST(SimulateBadInput, ReturnsOneAndCreatesNoRunDirectory) {
   o.until = -1.0;
   EXPECT_EQ(1, simulate(o).code);
   EXPECT_FALSE(fs::exists(dir / "bad_until"));
+  // So is one past the case's end_time (0.1 s), which would stop at end_time without saying so.
+  o.until = 0.5;
+  const Captured past = simulate(o);
+  EXPECT_EQ(1, past.code);
+  EXPECT_NE(past.err.find("output.end_time"), std::string::npos) << past.err;
+  EXPECT_FALSE(fs::exists(dir / "bad_until"));
   // So is a missing case file.
   const Captured missing = simulate(options(dir / "no_such_case.toml", dir / "missing_case"));
   EXPECT_EQ(1, missing.code);

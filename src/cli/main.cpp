@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
       "simulate", "Run the MPS simulation of a case: frames (VTK .vtp + .pvd), diagnostics.csv, checkpoints");
   simulate->add_option("case", sim.case_file, "Case file (TOML); see docs/case-file.md")->check(CLI::ExistingFile);
   simulate->add_option("--out,-o", sim.out_dir, "Run directory to write (created; must be new or empty)");
-  simulate->add_option("--until", sim.until, "Stop at this simulated time [s] (default: output.end_time)");
+  simulate->add_option("--until", sim.until, "Stop at this simulated time [s], at most output.end_time (default: it)");
   simulate->add_option("--threads,-j", sim.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   simulate->add_flag("--ascii", sim.ascii, "Write ASCII VTK files instead of binary");
   simulate->add_option("--resume", resume_dir, "Continue the run in this directory from its last checkpoint")
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   run->add_option("--out,-o", pipe.out_dir, "Run directory to write (created; must be new or empty)")->required();
-  run->add_option("--until", pipe.until, "Stop the simulation at this time [s] (default: output.end_time)");
+  run->add_option("--until", pipe.until, "Stop the simulation at this time [s], at most output.end_time (default: it)");
   run->add_option("--threads", pipe.threads, "OpenMP threads of simulate and texture (default: all cores)")
       ->check(CLI::Range(1, 4096));
   run->add_option("--jobs,-j", pipe.jobs, "povray processes at once (default: the number of cores)")

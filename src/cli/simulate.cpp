@@ -302,6 +302,15 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   return 0;
 }
 
+// --until past the case's output.end_time would stop at end_time without saying so: refused.
+static void checkUntil(const SimulateOptions& options, const CaseConfig& config, const fs::path& case_file) {
+  if (!options.until || *options.until <= config.output.end_time * (1.0 + 1e-12)) return;
+  std::ostringstream message;
+  message << "--until " << *options.until << " s is past output.end_time = " << config.output.end_time
+          << " s of " << case_file.string() << "; raise output.end_time there (on --resume it may change)";
+  throw InputError(message.str());
+}
+
 // Everything before the run: the case (validated, its size against the memory), the run directory (free, empty
 // or --overwrite), then, for a new run, the directory taken over and the case copied into it.
 int simulate(const SimulateOptions& options) {
@@ -316,6 +325,7 @@ int simulate(const SimulateOptions& options) {
       throw InputError("cannot resume: " + (dir / kCheckpoint).string() + " does not exist");
     lock.emplace(dir, "simulate");
     config = loadCaseFile(dir / kCaseCopy);
+    checkUntil(options, config, dir / kCaseCopy);
     case_text = readText(dir / kCaseCopy);
     const int dim = checkpointDimension(dir / kCheckpoint);
     if (dim != config.dimension)
@@ -323,6 +333,7 @@ int simulate(const SimulateOptions& options) {
                        std::to_string(config.dimension) + "D");
   } else {
     config = loadCaseFile(options.case_file);
+    checkUntil(options, config, options.case_file);
     if (dir.empty()) throw InputError("no output directory given (--out DIR)");
     checkOutputPath(dir);
     if (fs::exists(dir)) RunDirLock::checkFree(dir);
