@@ -85,6 +85,14 @@ assert circulation < 0 and back_wall > 0 and plunge > 0, fwd
 assert abs(back_wall - 0.30) < 1e-9, back_wall
 assert all(abs(a + b) < 1e-9 for a, b in zip(fwd, rev)), (fwd, rev)
 PY
+# --back-wall X: the cavity's columns start at the first node at or past X (here x = 0.06-0.08 m: 0.22 m/s).
+"$py" "$tool" "$work/run" --back-wall 0.06 --out "$work/wall" --dpi 60 > /dev/null
+"$py" - "$work" <<'PY'
+import csv, sys
+rows = {r["quantity"]: float(r["value"]) for r in csv.DictReader(open(f"{sys.argv[1]}/wall/air_flow.csv"))}
+back_wall = rows["air along the back wall: mean v_y [m/s]"]
+assert abs(back_wall - 0.22) < 1e-9, back_wall
+PY
 
 source "$(dirname "${BASH_SOURCE[0]}")/expect_fail.sh"
 mkdir -p "$work/empty"
