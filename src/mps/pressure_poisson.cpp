@@ -105,7 +105,7 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     inner[diagonal_at] = static_cast<int>(r);
     value[diagonal_at] = diagonal;
     const double compression = (number_density[i] - c.n0) / c.n0;
-    if (!problem.sourceless.empty() && problem.sourceless[i]) {
+    if (problem.isSourceless(i)) {
       sys.rhs[r] = 0.0;
     } else if (source.kind == PressureSource::Standard) {
       sys.rhs[r] = rho / (dt * dt) * compression;

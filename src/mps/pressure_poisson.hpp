@@ -51,6 +51,7 @@ struct PressureProblem {
   // Rows without the divergence and compression source (empty = none): an inflow buffer's driven water with
   // `[[inflow]] pressure = "harmonic"` (inflow_pressure.hpp), whose pressure is that of a uniform flow, lap p = 0.
   std::vector<char> sourceless;
+  bool isSourceless(std::size_t i) const { return !sourceless.empty() && sourceless[i]; }
   // The pressure a Dirichlet boundary holds (taking part, not unknown; empty = 0 for all): a gas vent's ambient
   // pressure (gas_vent.hpp). Row i's known neighbour j adds (its coefficient) * boundary_value[j] to the right.
   std::vector<double> boundary_value;

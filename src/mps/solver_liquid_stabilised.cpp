@@ -83,9 +83,8 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.unknown[i] || roles_.enclosed_gas[i]) continue;
-    const bool sourceless = !problem_.sourceless.empty() && problem_.sourceless[i];  // inflow_pressure.hpp
-    double extra =
-        mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, rho, gravity_, dt, !sourceless);
+    double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, rho, gravity_, dt,
+                                       !problem_.isSourceless(i));  // inflow_pressure.hpp
     extra += laplacianConsistencyTerm<D>(i, p.position, neighbours_, constants_, last_gradient[i], inLaplacian);
     double surface = 0.0;
     forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, atSurface,

@@ -108,9 +108,8 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.unknown[i]) continue;
-    const bool sourceless = !problem_.sourceless.empty() && problem_.sourceless[i];
     double extra = mirroredWallTerm<D>(i, p.position, p.velocity, p.kind, neighbours_, constants_, 1.0, gravity_, dt,
-                                       !sourceless);
+                                       !problem_.isSourceless(i));  // inflow_pressure.hpp
     extra += laplacianConsistencyTerm<D>(i, p.position, neighbours_, constants_, last[i], inLaplacian);
     double surface = 0.0;
     forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, atSurface,
