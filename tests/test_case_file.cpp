@@ -132,6 +132,9 @@ TEST(CaseFile, PressureSourceKeys) {
   CaseConfig c = parseCase(p.text(), "t.toml");
   EXPECT_EQ(c.numerics.pressure_source, PressureSource::Mixed);
   EXPECT_DOUBLE_EQ(c.numerics.source_relaxation, 0.05);
+  EXPECT_FALSE(c.numerics.source_relaxation_per_time);  // "step", the default
+  p.numerics += "source_relaxation_basis = \"time\"\n";
+  EXPECT_TRUE(parseCase(p.text(), "t.toml").numerics.source_relaxation_per_time);
 
   p = Parts{};
   p.numerics += "pressure_source = \"standard\"\nsource_relaxation = 1\n";  // upper bound is closed

@@ -139,7 +139,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.checkKeys(nm, np,
                {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
                 "pressure_repulsion", "particle_shifting", "shift_limit", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
-                "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "pressure_solver",
+                "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
@@ -170,6 +170,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)
     n.pressure_source = s == 0 ? PressureSource::Standard : PressureSource::Mixed;
   rd.number(nm, np, "source_relaxation", {0.0, 1.0, false, false}, n.source_relaxation);
+  if (int s = rd.choice(nm, np, "source_relaxation_basis", {"step", "time"}); s >= 0)
+    n.source_relaxation_per_time = s == 1;
   if (n.scheme == Scheme::Stabilised && n.pressure_source != PressureSource::Mixed)
     rd.fail("numerics.scheme = \"stabilised\" needs numerics.pressure_source = \"mixed\" (its walls act through the "
             "velocity-divergence source; docs/case-file.md)");

@@ -78,6 +78,18 @@ struct PressureSourceTerm {
   double relaxation = 1.0;  // gamma (mixed source only)
 };
 
+// The source of a step of length dt from the case (numerics.source_relaxation_basis): gamma as given ("step"), or
+// gamma dt/dt_max for a step shorter than dt_max ("time"). The number-density term moves a particle by about
+// gamma delta l0 in a step, so it gives it a velocity ~ gamma delta L/dt over a region of size L: per step, a step
+// cut 30x short by the Courant limit kicks all the water 30x harder; per time, the correction keeps its rate,
+// gamma/dt_max per second, and its velocity. The memory term below takes the same gamma, so compressed gas still
+// holds rho c^2 delta at rest.
+inline PressureSourceTerm sourceTermFor(const NumericsConfig& numerics, double dt) {
+  double gamma = numerics.source_relaxation;
+  if (numerics.source_relaxation_per_time && dt < numerics.dt_max) gamma *= dt / numerics.dt_max;
+  return {numerics.pressure_source, gamma};
+}
+
 // The memory term above for a compressible row with last pressure `previous` (0 for the standard source, whose
 // right-hand side already holds the whole compression, and for c = infinity).
 inline double compressibleMemoryTerm(PressureSourceTerm source, double previous, double dt, double sound_speed) {

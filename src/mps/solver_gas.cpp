@@ -85,7 +85,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
         problem_.boundary_value[i] = ventGasPressure(static_cast<std::size_t>(i), gas.density);
       }
   }
-  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
   problem_.extra_rhs.clear();
   problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)

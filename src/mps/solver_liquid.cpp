@@ -74,7 +74,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   }
   problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
   if (stabilised) stabilisedPressureTerms(dt);
-  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);

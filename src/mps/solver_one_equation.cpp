@@ -98,7 +98,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   for (std::int64_t i = 0; i < n; ++i)
     if (vented(i)) surface_pressure_[i] = ventGasPressure(static_cast<std::size_t>(i), problem_.density_of[i]);
   findSurfaceTangents(last);
-  const PressureSourceTerm source{config_.numerics.pressure_source, config_.numerics.source_relaxation};
+  const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
   problem_.extra_rhs.assign(n, 0.0);
   const double factor = constants_.laplacianFactor();
   const auto& rho = problem_.density_of;
