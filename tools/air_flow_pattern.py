@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The air flow a waterfall drives, averaged over a time window (the steady pattern of Gotoh et al.'s Figs. 4, 5).
 
 Reads the grid fields of a mistfall run (RUN_DIR/fields/fields_*.vti, written when output.field_spacing > 0),
