@@ -29,14 +29,16 @@ EntrainedBubbleModel airInWater(double diameter) {
 
 using test_support::kPockets;
 
-// The ten single gas particles of support/pocket_tank.hpp, moved as points of bubbles of `diameter`.
-std::string pointsCase(double diameter) {
+// The ten single gas particles of support/pocket_tank.hpp, moved as points of bubbles of `diameter`; `numerics`:
+// more lines of [numerics] (the coupling).
+std::string pointsCase(double diameter, const std::string& numerics = "") {
   return test_support::pocketTankCase("entrained_points",
-                                      "entrained_bubble_diameter = " + std::to_string(diameter) + "\n");
+                                      "entrained_bubble_diameter = " + std::to_string(diameter) + "\n" + numerics);
 }
 
 struct PointsRun : test_support::SolverRun<2> {
-  explicit PointsRun(double diameter) : SolverRun(pointsCase(diameter), "points.toml") {}
+  explicit PointsRun(double diameter, const std::string& numerics = "")
+      : SolverRun(pointsCase(diameter, numerics), "points.toml") {}
   std::size_t count(ParticleKind kind, Phase phase) const {
     const auto& p = state.particles;
     std::size_t c = 0;
@@ -77,10 +79,28 @@ TEST(EntrainedBubbleDrag, TerminalRiseOfMillimetreBubbles) {
 // water particle), slip up through the water at the drag law's terminal speed, and at the surface give their volume
 // back (the nearest water particle becomes gas). Each phase keeps its particles: water particles less points, and gas
 // particles plus points, are constant. The water's kinetic energy stays below the work the bubbles' buoyancy did on
-// their way up, (rho_l - rho_g) |g| V times their rise, which is where its motion comes from.
-TEST(EntrainedBubbles, RiseThroughStillWaterAndRejoinTheAir) {
+// their way up, (rho_l - rho_g) |g| V times their rise, which is where its motion comes from. On both couplings: on
+// the one equation a lone gas particle in the water otherwise carries its own pressure and momentum, at 1/830 of
+// the water's density, and an unresolved one there rattled in its cage of water until the 5 mm waterfall diverged
+// (docs/two-phase.md).
+struct Coupling {
+  const char* name;
+  const char* numerics;
+};
+
+class EntrainedBubbleCoupling : public ::testing::TestWithParam<Coupling> {};
+
+const Coupling kCouplings[] = {
+    {"two_systems", ""},
+    {"one_equation", "scheme = \"stabilised\"\ncoupling = \"one_equation\"\ncollision_distance = 0.8\n"},
+};
+
+INSTANTIATE_TEST_SUITE_P(EntrainedBubbles, EntrainedBubbleCoupling, ::testing::ValuesIn(kCouplings),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST_P(EntrainedBubbleCoupling, RiseThroughStillWaterAndRejoinTheAir) {
   const double d = 0.005, l0 = 0.005;
-  PointsRun run(d);
+  PointsRun run(d, GetParam().numerics);
   const std::size_t gas0 = run.count(ParticleKind::Fluid, Phase::Gas);
   const std::size_t liquid0 = run.count(ParticleKind::Fluid, Phase::Liquid);
   const EntrainedBubbleModel model = airInWater(d);
@@ -194,9 +214,7 @@ TEST(EntrainedBubbles, CaseFileReadsTheKeys) {
   };
   EXPECT_NE(error("entrained_bubble_diameter = 0.004\nentrained_gas_rise_speed = 0.2\n").find("allowed one of them"),
             std::string::npos);
-  EXPECT_NE(error("scheme = \"stabilised\"\ncoupling = \"one_equation\"\nentrained_bubble_diameter = 0.004\n")
-                .find("numerics.entrained_bubble_diameter"),
-            std::string::npos);
+  EXPECT_EQ(error("scheme = \"stabilised\"\ncoupling = \"one_equation\"\nentrained_bubble_diameter = 0.004\n"), "");
   EXPECT_NE(error("entrained_bubble_diameter = -0.004\n").find("numerics.entrained_bubble_diameter"), std::string::npos);
   EXPECT_NE(error("", "surface_tension = 0\n").find("physics.surface_tension"), std::string::npos);
 }
@@ -251,4 +269,15 @@ TEST(EntrainedBubbles, ReleaseAtTheSurfaceTurnsTheNearestWaterIntoGas) {
     }
   }
   EXPECT_EQ(gas, 1u);
+}
+
+// On the one equation only gas regions below a bubble's resolution (fewer than bubble_min_particles) become points;
+// the rest keep their particles in the lattice. With bubble_min_particles = 1 every region counts as resolved, so
+// none of the pocket tank's ten single gas particles may leave (with the default 6 all ten do, above).
+TEST(EntrainedBubbles, OneEquationMovesOnlyGasBelowABubblesResolution) {
+  PointsRun run(0.005, "scheme = \"stabilised\"\ncoupling = \"one_equation\"\ncollision_distance = 0.8\n"
+                       "bubble_min_particles = 1\n");
+  run.stepTo(0.005);
+  EXPECT_EQ(run.made, 0u);
+  EXPECT_EQ(run.count(ParticleKind::Point, Phase::Gas), 0u);
 }

@@ -213,9 +213,6 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.gap_water_floor && n.coupling != NumericsConfig::Coupling::OneEquation)
     rd.fail("numerics.gap_water_floor = true is a condition of the one equation's water rows (the two systems' water "
             "already holds p = 0 at its free surface); allowed with numerics.coupling = \"one_equation\", or false");
-  if (n.coupling == NumericsConfig::Coupling::OneEquation && n.entrained_bubble_diameter > 0.0)
-    rd.fail("numerics.entrained_bubble_diameter = " + fmt(n.entrained_bubble_diameter) + " needs numerics.coupling = "
-            "\"two_systems\" (the one equation gives every gas particle its own momentum); allowed 0 with one_equation");
   if (n.gas_domain == GasDomain::Closed && !std::isfinite(c.physics.gas.sound_speed))
     rd.fail("numerics.gas_domain = \"closed\" needs a finite physics.gas.sound_speed (a closed incompressible gas "
             "has no pressure level); allowed \"open\", or a sound speed > 0");

@@ -259,10 +259,12 @@ const StepReport& MpsSolver<D>::step(double until) {
 template <int D>
 void MpsSolver<D>::findBubbles() {
   if (oneEquation()) {  // every active particle in the one equation, each gas particle with its own momentum
-    // Which gas is enclosed by water: in an open gas domain the rest of the gas may border empty space.
+    // Which gas is enclosed by water: in an open gas domain the rest of the gas may border empty space; with
+    // entrained points, the pockets below a bubble's resolution that may become points (entrained_bubbles.hpp).
     regions_ = GasRegions{};
     auto& p = state_.particles;
-    if (phase_present_[static_cast<int>(Phase::Gas)] && config_.numerics.gas_domain == GasDomain::Open) {
+    if (phase_present_[static_cast<int>(Phase::Gas)] &&
+        (config_.numerics.gas_domain == GasDomain::Open || entrainedPoints())) {
       findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
                         gasRegionOptions(&p.enclosed));
       p.enclosed = regions_.enclosed_particle;
