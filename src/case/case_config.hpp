@@ -143,7 +143,7 @@ struct NumericsConfig {
   double collision_restitution = 0.2;   // restitution of the collision model
   PressureSource pressure_source = PressureSource::Standard;
   double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
-  // What gamma relaxes (mps/pressure_poisson.hpp sourceRelaxation): "step" (Tanaka & Masunaga), a fraction gamma of
+  // What gamma relaxes (sourceTermFor, mps/pressure_poisson.hpp): "step" (Tanaka & Masunaga), a fraction gamma of
   // the number-density error per step, whatever its length; "time", gamma per step of dt_max, so a step of dt
   // relaxes gamma dt/dt_max and the velocity the correction gives, ~ gamma delta L/dt_max, does not grow as the
   // Courant limit shortens the step.
