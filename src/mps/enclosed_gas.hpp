@@ -61,6 +61,13 @@ struct GasRegions {
   std::size_t dispersed = 0;  // gas particles left out of their region by dispersed_fraction (not joined by touch)
 
   std::size_t regionCount() const { return enclosed.size(); }
+  // The particles of each region.
+  std::vector<std::size_t> regionSizes() const {
+    std::vector<std::size_t> size(regionCount(), 0);
+    for (std::int32_t r : region_of)
+      if (r >= 0) ++size[static_cast<std::size_t>(r)];
+    return size;
+  }
 };
 
 struct BubbleStats {

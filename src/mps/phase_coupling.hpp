@@ -46,9 +46,7 @@ template <int D>
 void assignCouplingRoles(const Particles<D>& p, const GasRegions& regions, CouplingRoles& roles,
                          std::size_t min_bubble_particles = 1) {
   const std::size_t n = p.size();
-  std::vector<std::size_t> region_size(regions.regionCount(), 0);
-  for (std::size_t i = 0; i < n && i < regions.region_of.size(); ++i)
-    if (regions.region_of[i] >= 0) ++region_size[regions.region_of[i]];
+  const std::vector<std::size_t> region_size = regions.regionSizes();
   roles.open_gas.assign(n, 0);
   roles.enclosed_gas.assign(n, 0);
   roles.in_liquid_system.assign(n, 0);

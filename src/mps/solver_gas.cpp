@@ -242,19 +242,13 @@ template <int D>
 void MpsSolver<D>::moveEntrainedBubbles(double dt) {
   auto& p = state_.particles;
   std::vector<char> candidate(p.size(), 0);
-  // Below a bubble's resolution: on the two systems the enclosed gas that is not a bubble's (phase_coupling.hpp); on
-  // the one equation, which has no bubbles, the gas of enclosed regions of fewer than bubble_min_particles.
-  std::vector<std::size_t> region_size(regions_.regionCount(), 0);
-  if (oneEquation())
-    for (std::size_t i = 0; i < p.size() && i < regions_.region_of.size(); ++i)
-      if (regions_.region_of[i] >= 0) ++region_size[static_cast<std::size_t>(regions_.region_of[i])];
-  const auto small = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
-  auto belowBubble = [&](std::size_t i) {
-    if (!oneEquation()) return !roles_.enclosed_gas[i];
-    return regions_.region_of[i] >= 0 && region_size[static_cast<std::size_t>(regions_.region_of[i])] < small;
-  };
+  // Below a bubble's resolution: the gas of enclosed regions of fewer than bubble_min_particles. On the two systems
+  // that is the enclosed gas that is not a bubble's (phase_coupling.hpp); the one equation has no bubbles of its own.
+  const std::vector<std::size_t> region_size = regions_.regionSizes();
+  const auto resolved = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
   for (std::size_t i = 0; i < p.size() && i < regions_.enclosed_particle.size(); ++i)
-    candidate[i] = regions_.enclosed_particle[i] && belowBubble(i) && !isVentGas(i);
+    candidate[i] = regions_.enclosed_particle[i] &&
+                   region_size[static_cast<std::size_t>(regions_.region_of[i])] < resolved && !isVentGas(i);
   const std::size_t before = p.size();
   EntrainedBubbleCounts counts = entrained_bubbles_->advance(p, start_velocity_, candidate, dt, state_.point_forces);
   if (p.size() > before) {  // the new points take no part in the rest of the step's operators
