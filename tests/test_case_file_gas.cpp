@@ -241,12 +241,15 @@ TEST(CaseFileGas, BubbleGasKeys) {
   EXPECT_EQ(d.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::FollowLiquid);
   EXPECT_DOUBLE_EQ(d.numerics.bubble_regularisation, 10.0);
   EXPECT_FALSE(d.numerics.gas_pressure_memory);
+  EXPECT_FALSE(d.numerics.gas_collision_after_correction);
   Parts p;
-  p.numerics += "bubble_gas_motion = \"own_pressure\"\nbubble_regularisation = 0\ngas_pressure_memory = true\n";
+  p.numerics += "bubble_gas_motion = \"own_pressure\"\nbubble_regularisation = 0\ngas_pressure_memory = true\n"
+                "gas_collision_after_correction = true\n";
   const CaseConfig c = parseCase(p.text(), "t.toml");
   EXPECT_EQ(c.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::OwnPressure);
   EXPECT_DOUBLE_EQ(c.numerics.bubble_regularisation, 0.0);
   EXPECT_TRUE(c.numerics.gas_pressure_memory);
+  EXPECT_TRUE(c.numerics.gas_collision_after_correction);
   p = Parts{};
   p.numerics += "bubble_gas_motion = \"float\"\n";
   EXPECT_HAS(errorOf(p.text()), "allowed \"follow_liquid\" or \"own_pressure\"");

@@ -177,6 +177,10 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
+  // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
+  // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
+  // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.
+  bool gas_collision_after_correction = false;
   // coupling = "one_equation" (experimental): water short of neighbours (n* < surface_threshold n0) next to air holds
   // at least the air's pressure there (gap_water_floor.hpp: the gap is unresolved air, which cannot pull on the water;
   // without it the water going over a brink clings to the bed's face). A guard, counted (gap_water_floors).

@@ -144,7 +144,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
-                "gap_water_floor"});
+                "gap_water_floor", "gas_collision_after_correction"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -194,6 +194,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
+  rd.boolean(nm, np, "gas_collision_after_correction", n.gas_collision_after_correction);
   if (int s = rd.choice(nm, np, "gas_operators", {"paper", "stabilised"}); s >= 0) n.gas_stabilised = s == 1;
   if (int s = rd.choice(nm, np, "vent_outlet", {"buffer", "zero_gradient"}); s >= 0) n.vent_zero_gradient = s == 1;
   if (n.gas_stabilised && n.pressure_source != PressureSource::Mixed)

@@ -128,6 +128,7 @@ class MpsSolver {
   double chooseTimeStepFor(double until);  // also fills report_.liquid_dt, dt_set_by_gas
   void predict(double dt);
   void collide(double dt);
+  void collideCorrectedGas(double dt);
   void findBubbles();
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
