@@ -455,3 +455,23 @@ TEST(GasVent, AVentedRunResumesBitIdentically) {
   EXPECT_EQ(whole.state.vented_out, second.state.vented_out);
   test_support::expectSameParticles(whole.state.particles, second.state.particles);
 }
+
+// Water that splashed into a vent and leaves it across the outer face just beside the box's edge (outside every
+// column) left through the vent: it is removed and counted as liquid_out, not left beyond the domain to be counted as
+// escaped (waterfall_small, cavity vent, 4.32 s: 0.2 l0 below the vent's lower edge).
+TEST(GasVent, WaterLeavingByTheOuterFaceBesideTheEdgeLeaves) {
+  Exchange e;
+  std::size_t k = e.p.size();
+  for (std::size_t i = 0; i < e.p.size(); ++i)
+    if (e.vent[i] == 0 && std::abs(e.p.position[i][0] - 0.005) < 1e-9 && std::abs(e.p.position[i][1] + 0.035) < 1e-9)
+      k = i;
+  ASSERT_LT(k, e.p.size());
+  e.p.phase[k] = Phase::Liquid;
+  e.p.position[k] = Vec<2>(-0.002, -0.041);  // past the outer face y = -0.04, left of the first column
+  const std::size_t before = e.p.size();
+  const VentExchange x = exchangeVentGas<2>(e.p, e.config, e.vent, e.start, 0.02, 1.2, Vec<2>(0.0, -9.81));
+  EXPECT_EQ(1, x.liquid_out);
+  EXPECT_EQ(0, x.gas_out);
+  EXPECT_EQ(before - 1 + static_cast<std::size_t>(x.gas_in), e.p.size());
+  for (std::size_t i = 0; i < e.p.size(); ++i) EXPECT_GE(e.p.position[i][1], -0.04) << "particle " << i;
+}
