@@ -264,19 +264,26 @@ class EntrainedBubbles {
         cells_[key(cellOf(p.position[j]))].push_back(static_cast<std::int32_t>(j));
     }
   }
+  // Visits the particles binned in the cells whose offset o from cell c has max |o_d| == ring (ring < 0: every cell
+  // of the box within |ring|), the first axis fastest.
   template <class Visit>
-  void forEachNear(const Vec<D>& x, Visit&& visit) const {
-    const auto c = cellOf(x);
-    Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-1);
+  void forEachInCells(const Eigen::Matrix<std::int64_t, D, 1>& c, int ring, Visit&& visit) const {
+    const int reach = std::abs(ring);
+    Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-reach);
     while (true) {
-      const auto it = cells_.find(key(c + o));
-      if (it != cells_.end())
-        for (auto j : it->second) visit(j);
+      if (ring < 0 || o.cwiseAbs().maxCoeff() == ring)
+        if (const auto it = cells_.find(key(c + o)); it != cells_.end())
+          for (auto j : it->second) visit(j);
       int d = 0;
-      while (d < D && o[d] == 1) o[d++] = -1;
+      while (d < D && o[d] == reach) o[d++] = -reach;
       if (d == D) break;
       ++o[d];
     }
+  }
+  // The particles binned in the cell of x and the cells around it (within re at least).
+  template <class Visit>
+  void forEachNear(const Vec<D>& x, Visit&& visit) const {
+    forEachInCells(cellOf(x), -1, visit);
   }
   Liquid liquidAround(const Particles<D>& p, const std::vector<Vec<D>>& start_velocity, const Vec<D>& x, double dt,
                       std::vector<std::int32_t>& near, std::vector<double>& share) const {
@@ -316,21 +323,11 @@ class EntrainedBubbles {
     for (int ring = 0; ring <= kReleaseRings; ++ring) {
       // every cell of this ring is at least (ring - 1) cells away from x: stop when that is beyond the nearest found
       if (nearest >= 0 && (ring - 1) * cell_ > std::sqrt(closest)) break;
-      Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-ring);
-      while (true) {
-        if (o.cwiseAbs().maxCoeff() == ring) {
-          if (const auto it = cells_.find(key(c + o)); it != cells_.end())
-            for (auto j : it->second) {
-              if (p.kind[j] != ParticleKind::Fluid || p.phase[j] != Phase::Liquid) continue;
-              const double r = (p.position[j] - x).squaredNorm();
-              if (nearest < 0 || r < closest) nearest = j, closest = r;
-            }
-        }
-        int d = 0;
-        while (d < D && o[d] == ring) o[d++] = -ring;
-        if (d == D) break;
-        ++o[d];
-      }
+      forEachInCells(c, ring, [&](std::int32_t j) {
+        if (p.kind[j] != ParticleKind::Fluid || p.phase[j] != Phase::Liquid) return;
+        const double r = (p.position[j] - x).squaredNorm();
+        if (nearest < 0 || r < closest) nearest = j, closest = r;
+      });
     }
     return nearest;
   }

@@ -420,15 +420,24 @@ void MpsSolver<D>::predict(double dt) {
 template <int D>
 void MpsSolver<D>::collide(double dt) {
   if (config_.numerics.collision_distance <= 0.0) return;
+  const auto& p = state_.particles;
+  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
+  const auto& open_gas = roles_.open_gas;
+  report_.collisions = collideWhere(
+      dt, [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); });
+}
+
+// The collision model (collision.hpp) with numerics.collision_distance and collision_restitution, over the pairs
+// (i, j) where j may change i's velocity; the reversals it made.
+template <int D>
+template <class Affects>
+std::size_t MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
   auto& p = state_.particles;
   std::vector<double> mass(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
-  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
-  const auto& open_gas = roles_.open_gas;
-  auto affects = [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); };
-  report_.collisions = resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_,
-                       config_.numerics.collision_distance * constants_.l0, config_.numerics.collision_restitution, dt,
-                       affects);
+  return resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_,
+                              config_.numerics.collision_distance * constants_.l0,
+                              config_.numerics.collision_restitution, dt, affects);
 }
 
 // numerics.gas_collision_after_correction: the collision model once more, after the gas system's correction, for gas
@@ -440,16 +449,11 @@ void MpsSolver<D>::collide(double dt) {
 template <int D>
 void MpsSolver<D>::collideCorrectedGas(double dt) {
   if (!config_.numerics.gas_collision_after_correction || config_.numerics.collision_distance <= 0.0) return;
-  auto& p = state_.particles;
-  std::vector<double> mass(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
-  auto affects = [&](std::int64_t i, std::int32_t j) {
+  const auto& p = state_.particles;
+  report_.collisions += collideWhere(dt, [&](std::int64_t i, std::int32_t j) {
     return roles_.inGasSystem(i) && !isVentGas(static_cast<std::size_t>(i)) &&
            (p.phase[j] == Phase::Liquid || isFixed(p.kind[j]));
-  };
-  report_.collisions += resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_,
-                                             config_.numerics.collision_distance * constants_.l0,
-                                             config_.numerics.collision_restitution, dt, affects);
+  });
 }
 
 // The walls' and dummies' pressure in the liquid system: paper scheme, extrapolated from the nearest wall particle

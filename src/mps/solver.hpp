@@ -129,6 +129,8 @@ class MpsSolver {
   void predict(double dt);
   void collide(double dt);
   void collideCorrectedGas(double dt);
+  template <class Affects>
+  std::size_t collideWhere(double dt, Affects&& affects);
   void findBubbles();
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
