@@ -29,9 +29,9 @@ case_for() {
   /usr/bin/python3 - "$here/cases/waterfall.toml" "$mm" "$scheme" <<'PY'
 import re, sys
 text, mm, scheme = open(sys.argv[1]).read(), float(sys.argv[2]), sys.argv[3]
-blocks = text.split("[[region]]")
-blocks = [b for b in blocks if 'material = "gas"' not in b]       # the air region goes; the rest stays
-text = "[[region]]".join(blocks)
+blocks = re.split(r"(?m)^(?=\[)", text)                              # one block per table header
+air = lambda b: b.startswith("[[vent]]") or (b.startswith("[[region]]") and 'material = "gas"' in b)
+text = "".join(b for b in blocks if not air(b))                      # the air region and its vents go
 text = re.sub(r'^name = "waterfall"', f'name = "overfall_{mm:g}mm"'.replace(".", "p"), text, flags=re.M)
 text = re.sub(r"^particle_spacing = .*", f"particle_spacing = {mm / 1000:g}", text, flags=re.M)
 text = re.sub(r"^dt_max = .*", f"dt_max = {mm * 5e-5:g}", text, flags=re.M)
