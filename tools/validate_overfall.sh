@@ -47,7 +47,12 @@ for mm in ${OVERFALL_SPACINGS:-10 7 5}; do
   name="water_${mm}mm_$scheme"
   case_for "$mm" >"$out/$name.toml"
   rm -rf "${out:?}/$name"
-  "$build/mistfall" simulate "$out/$name.toml" --out "$out/$name" --plain-progress 2>"$out/$name.log" || true
+  rc=0
+  "$build/mistfall" simulate "$out/$name.toml" --out "$out/$name" --plain-progress 2>"$out/$name.log" || rc=$?
+  if [ "$rc" = 1 ]; then  # bad input: the case this script wrote is wrong, so nothing below would mean anything
+    echo "validate_overfall.sh: $name.toml refused: $(tail -n 1 "$out/$name.log")" >&2
+    exit 1
+  fi
   echo "== $name: $(tail -n 1 "$out/$name.log")"
   /usr/bin/python3 "$here/tools/overfall_profile.py" "$out/$name" --from 2 --to 6 | grep -v "^wrote" || true
 done
