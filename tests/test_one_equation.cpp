@@ -1,7 +1,8 @@
 // Water and air in one pressure equation (numerics.coupling = "one_equation"; docs/two-phase.md): the interparticle
 // density of interface_density.hpp against the exact two-layer hydrostatics, and a tank of still water under still
-// air that must stay still. The same tank with the arithmetic mean of the two densities as the pair's density (the
-// interface taken midway between every pair) lifts the air off the water: 0.1 m/s by 0.18 s (docs/two-phase.md).
+// air that must stay still (its channel under closed air: tests/test_stabilised_air.cpp). The same tank with the
+// arithmetic mean of the two densities as the pair's density (the interface taken midway between every pair) lifts
+// the air off the water: 0.1 m/s by 0.18 s (docs/two-phase.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "case/case_file.hpp"
 #include "mps/interface_density.hpp"
 #include "support/breathing_bubble.hpp"
+#include "support/closed_channel.hpp"
 #include "support/run_case.hpp"
 #include "support/scratch.hpp"
 #include "support/tank_walls.hpp"
@@ -116,122 +118,6 @@ TEST(OneEquation, StillWaterUnderStillAirStaysAtRest) {
   });
 }
 
-// The inflow's driven water takes part in the one equation as water (solver_one_equation.cpp): a 5 cm channel fed
-// at q = 0.016 m^2/s through an inflow under a gate, over a brink into a pit whose floor is an outflow, all in a
-// closed box of air (l0 = 1 cm). Over 0.05-0.3 s the water crossing x = 0.10 m carries the inflow's discharge
-// within 15 % (measured +7.5 %, 43 particles: the channel starts full and draws down, and its storage upstream of
-// the section gives about +6 %); nothing escapes; the water's count changes by what was created less what was
-// removed, and the air's not at all. With the inflow left out of the equation (before), the water released beside
-// it has no neighbours on that side: this case fails its counts, and waterfall_small diverged at 0.047 s. (The air
-// box's pressure rises to 8-9 kPa by 0.15 s, twice what the water's intake compresses it by: docs/two-phase.md.)
-std::string closedChannelCase() {
-  return R"(
-[case]
-name = "closed_channel"
-dimension = 2
-[domain]
-min = [-0.04, -0.16]
-max = [0.56, 0.14]
-[physics.gas]
-sound_speed = 340.0
-[numerics]
-particle_spacing = 0.01
-dt_max = 5e-4
-scheme = "stabilised"
-coupling = "one_equation"
-collision_distance = 0.8
-pressure_source = "mixed"
-source_relaxation = 0.01
-gas_domain = "closed"
-[output]
-end_time = 0.3
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, -0.12]
-max = [0.52, 0.10]
-[[region]]
-name = "water"
-material = "water"
-min = [0.04, 0.0]
-max = [0.4, 0.05]
-velocity = [0.32, 0.0]
-[[region]]
-name = "bed"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.4, 0.0]
-[[region]]
-name = "back"
-material = "wall"
-min = [-0.04, -0.16]
-max = [0.0, 0.14]
-[[region]]
-name = "gate"
-material = "wall"
-min = [0.0, 0.05]
-max = [0.05, 0.10]
-[[region]]
-name = "lid"
-material = "wall"
-min = [0.0, 0.10]
-max = [0.56, 0.14]
-[[region]]
-name = "floor"
-material = "wall"
-min = [0.0, -0.16]
-max = [0.56, -0.12]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.52, -0.12]
-max = [0.56, 0.10]
-[[inflow]]
-name = "upstream"
-min = [0.0, 0.0]
-max = [0.04, 0.05]
-direction = [1, 0]
-discharge = 0.016
-[[outflow]]
-name = "pit"
-min = [0.0, -0.12]
-max = [0.52, -0.06]
-)";
-}
-
-TEST(OneEquation, ChannelUnderClosedAirCarriesTheInflowsDischarge) {
-  const CaseConfig config = parseCase(closedChannelCase(), "closed_channel.toml");
-  auto water = [](const SimulationState<2>& s) {
-    return static_cast<std::int64_t>(s.particles.count(ParticleKind::Fluid, Phase::Liquid) +
-                                     s.particles.count(ParticleKind::Inflow));
-  };
-  const double l0 = 0.01, q = 0.016, section = 0.10, from = 0.05, to = 0.3;
-  // The water that crossed the section: what the inflow created less the growth of the water upstream of it.
-  auto upstream = [&](const SimulationState<2>& s) {
-    std::int64_t n = 0;
-    for (std::size_t i = 0; i < s.particles.size(); ++i)
-      n += s.particles.kind[i] == ParticleKind::Inflow ||
-           (s.particles.kind[i] == ParticleKind::Fluid && s.particles.phase[i] == Phase::Liquid &&
-            s.particles.position[i][0] < section);
-    return n;
-  };
-  std::int64_t water0 = 0, crossed = 0;
-  std::size_t air0 = 0;
-  test_support::runThrough<2>(config, {0.0, from, 0.1, 0.2, to}, [&](double t, const SimulationState<2>& s,
-                                                                   const MpsSolver<2>&) {
-    const auto& p = s.particles;
-    if (t == 0.0) {
-      water0 = water(s);
-      air0 = p.count(ParticleKind::Fluid, Phase::Gas);
-    }
-    if (t == from) crossed = -(s.created - upstream(s));
-    if (t == to) crossed += s.created - upstream(s);
-    EXPECT_EQ(0u, p.count(ParticleKind::Escaped)) << "t = " << t;
-    EXPECT_EQ(air0, p.count(ParticleKind::Fluid, Phase::Gas)) << "t = " << t;
-    EXPECT_EQ(water(s) - water0, s.created - s.removed) << "t = " << t;
-  });
-  EXPECT_NEAR(q, crossed * l0 * l0 / (to - from), 0.15 * q);
-}
 
 // numerics.gap_water_floor (gap_water_floor.hpp): the same channel's water leaves its brink (x = 0.40 m) and falls
 // through the air into the pit. Nothing pushes a falling sheet sideways but the air's pressure, tens of pascals, so
@@ -240,7 +126,7 @@ TEST(OneEquation, ChannelUnderClosedAirCarriesTheInflowsDischarge) {
 // it turned down the bed's face, held there by the tension of the water at the edge (on waterfall_small: -0.4 to
 // -1.3 kPa against the air's -0.14 kPa): -0.045 m/s at x = 0.413 m.
 TEST(OneEquation, WaterOverABrinkSpringsClearOfItsFaceWithTheGapFloor) {
-  std::string text = closedChannelCase();
+  std::string text = test_support::closedChannelCase("one_equation");
   text.replace(text.find("gas_domain = \"closed\""), std::string("gas_domain = \"closed\"").size(),
                "gas_domain = \"closed\"\ngap_water_floor = true");
   const CaseConfig config = parseCase(text, "closed_channel.toml");
@@ -356,7 +242,7 @@ TEST(OneEquation, BubbleBreathesInAndOutAtTheTwoDimensionalRayleighPlessetFreque
 // lowest: its hydrostatic height, less than rho g l0.
 TEST(OneEquation, HarmonicInflowBufferHoldsTheWatersPressureNotTension) {
   for (const bool harmonic : {false, true}) {
-    std::string text = closedChannelCase();
+    std::string text = test_support::closedChannelCase("one_equation");
     if (harmonic) text.replace(text.find("discharge = 0.016"), 17, "discharge = 0.016\npressure = \"harmonic\"");
     const CaseConfig config = parseCase(text, "closed_channel.toml");
     double lowest_below = 0.0;  // the buffer's lowest pressure less the lowest of the water beside the gate

@@ -254,15 +254,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
-  // The stabilised scheme takes gas only through the one equation (experimental; with open boundaries too: on
-  // waterfall_small it runs past the sheet's impact and diverges at 1.1 s, docs/two-phase.md). Water alone takes
-  // inflow and outflow boundaries: its channel carries the critical energy of a frictionless free overfall
-  // (docs/waterfall.md, tests/test_open_boundaries.cpp).
-  if (c.numerics.scheme == Scheme::Stabilised && c.numerics.coupling != NumericsConfig::Coupling::OneEquation &&
-      std::any_of(c.regions.begin(), c.regions.end(), [](const Region& r) { return r.material == Material::Gas; }))
-    rd.fail("numerics.scheme = \"stabilised\" is built and validated for water and walls only (with air: "
-            "numerics.coupling = \"one_equation\", experimental); this case has gas regions: use numerics.scheme = "
-            "\"paper\" (docs/validation.md)");
+  // The stabilised scheme takes gas under either coupling (experimental with open boundaries: docs/two-phase.md,
+  // "The stabilised liquid under the two-systems coupling"). Water alone takes inflow and outflow boundaries: its
+  // channel carries the critical energy of a frictionless free overfall (docs/waterfall.md,
+  // tests/test_open_boundaries.cpp).
   detail::readTexture(rd, root, c);
   detail::readRender(rd, root, c);
   return c;

@@ -105,9 +105,13 @@ void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>& last_gradient)
   surface_tangents_ = surfaceTangents<D>(p.position, neighbours_, constants_.re_laplacian, last_gradient, freeSurface);
 }
 
-// Particle shifting (particle_shifting.hpp) of the fluid particles the correction moved: the liquid system's
-// (walls in the sum), or every fluid particle of the one equation (both phases, walls in the sum) but a vent's gas,
-// which its column moves (gas_vent.hpp). Jacobi-style: all displacements from the positions before the stage.
+// Particle shifting (particle_shifting.hpp) of the fluid particles the correction moved: the liquid system's, or
+// every fluid particle of the one equation, but a vent's gas, which its column moves (gas_vent.hpp). The first
+// moment counts both phases and the walls in either coupling: under the two systems the open gas is invisible to
+// the liquid's pressure, but a water particle beside it is not at a free surface, and counting only the water
+// shifted it into the air wherever the surface normal (the last pressure gradient, noise in a falling sheet) missed
+// the interface (docs/two-phase.md, "The stabilised liquid under the two-systems coupling").
+// Jacobi-style: all displacements from the positions before the stage.
 template <int D>
 void MpsSolver<D>::shiftParticles(double dt) {
   auto& p = state_.particles;
@@ -116,7 +120,8 @@ void MpsSolver<D>::shiftParticles(double dt) {
   if (a <= 0.0 || surface_tangents_.empty()) return;
   const bool one = oneEquation();
   auto inSum = [&](std::int32_t j) {
-    return one ? (problem_.takes_part[j] || isMirroredWall(p.kind[j])) : roles_.in_liquid_system[j] != 0;
+    return one ? (problem_.takes_part[j] || isMirroredWall(p.kind[j]))
+               : (roles_.in_liquid_system[j] != 0 || roles_.open_gas[j] != 0);
   };
   std::vector<Vec<D>> shift(n, Vec<D>::Zero());
 #pragma omp parallel for schedule(static)
