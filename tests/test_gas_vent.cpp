@@ -1,5 +1,5 @@
 // Gas vents (src/mps/gas_vent.hpp): a vent's columns move with the air in front of them, gas leaves past the outer
-// face and enters there one lattice layer at a time; air flowing through a duct between two vents slows by the
+// face and enters there one lattice layer at a time, air entering from the domain joins its column's line; air flowing through a duct between two vents slows by the
 // dynamic pressure of the air it draws in (Bernoulli) and every gas particle is accounted for; water filling a tank pushes its air out of a vent at the ambient pressure,
 // where the sealed tank's air is compressed; the case-file checks.
 #include <gtest/gtest.h>
@@ -203,6 +203,48 @@ TEST(GasVent, ColumnsFollowTheAirInFrontAndTheOuterFaceCreatesALayerWhenOneFits)
   }
   EXPECT_EQ(4, moved);
   EXPECT_EQ(36, still);
+}
+
+// Air entering a vent joins its column on the column's line across the vent, where it would not lie within l0/2 of
+// the column's gas: in 0.02 s the top vent's first column (x = 0.005) moves 6 mm out with the air in front of it
+// (its layers at y = 0.311 .. 0.341; the last passes the outer face and leaves). Air that entered the box in the step
+// at (0.0083, 0.3035) is put on the column's line, x = 0.005, at the same height and the column's velocity; air that
+// entered beside it at (0.0021, 0.3012), 0.23 l0 below it once on the line, leaves through the vent (counted).
+TEST(GasVent, AirEnteringAVentJoinsItsColumnsLineOrLeavesWhereItWouldCrowdIt) {
+  Exchange e;
+  std::size_t a = e.p.size(), b = e.p.size();
+  for (std::size_t i = 0; i < e.p.size(); ++i) {
+    if (e.vent[i] >= 0 || e.p.phase[i] != Phase::Gas) continue;
+    if (std::abs(e.p.position[i][0] - 0.005) < 1e-9 && e.p.position[i][1] > 0.28)
+      e.p.velocity[i] = Vec<2>(0.0, 0.3);
+    if ((e.p.position[i] - Vec<2>(0.045, 0.255)).norm() < 1e-9) a = i;
+    if ((e.p.position[i] - Vec<2>(0.055, 0.255)).norm() < 1e-9) b = i;
+  }
+  ASSERT_LT(a, e.p.size());
+  ASSERT_LT(b, e.p.size());
+  e.p.position[a] = Vec<2>(0.0083, 0.3035);
+  e.p.velocity[a] = Vec<2>(0.2, 0.4);
+  e.p.position[b] = Vec<2>(0.0021, 0.3012);
+  const std::uint64_t id_a = e.p.id[a], id_b = e.p.id[b];
+  const std::size_t before = e.p.size();
+  const VentExchange x = exchangeVentGas<2>(e.p, e.config, e.vent, e.start, 0.02, 1.2, Vec<2>(0.0, -9.81));
+  EXPECT_EQ(2, x.gas_out);
+  EXPECT_EQ(1, x.gas_crowded_out);
+  EXPECT_EQ(2, x.gas_out_by_vent[1]);  // both by the top vent (the case's second)
+  EXPECT_EQ(0, x.gas_out_by_vent[0]);
+  EXPECT_EQ(before - 2 + static_cast<std::size_t>(x.gas_in), e.p.size());
+  int found_a = 0, found_b = 0;
+  for (std::size_t i = 0; i < e.p.size(); ++i) {
+    found_b += e.p.id[i] == id_b;
+    if (e.p.id[i] != id_a) continue;
+    ++found_a;
+    EXPECT_NEAR(0.005, e.p.position[i][0], 1e-12);
+    EXPECT_NEAR(0.3035, e.p.position[i][1], 1e-12);
+    EXPECT_EQ(0.0, e.p.velocity[i][0]);
+    EXPECT_NEAR(0.3, e.p.velocity[i][1], 1e-12);
+  }
+  EXPECT_EQ(1, found_a);
+  EXPECT_EQ(0, found_b);
 }
 
 TEST(GasVent, GasPastTheOuterFaceLeaves) {

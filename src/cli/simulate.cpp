@@ -224,6 +224,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.point_wall_stops = std::exchange(guards.point_wall_stops, 0);
     row.points_unpaired = std::exchange(guards.points_unpaired, 0);
     row.gap_water_floors = std::exchange(guards.gap_water_floors, 0);
+    row.vent_crowded_out = std::exchange(guards.vent_crowded_out, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -273,6 +274,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.point_wall_stops += static_cast<std::int64_t>(last.bubble_point_wall_stops);
         guards.points_unpaired += static_cast<std::int64_t>(last.bubble_points_unpaired);
         guards.gap_water_floors += static_cast<std::int64_t>(last.gap_water_floors);
+        guards.vent_crowded_out += static_cast<std::int64_t>(last.vent_crowded_out);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);

@@ -107,6 +107,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::point_wall_stops>("point_wall_stops"),
     column<&DiagnosticsRow::points_unpaired>("points_unpaired"),
     column<&DiagnosticsRow::gap_water_floors>("gap_water_floors"),
+    column<&DiagnosticsRow::vent_crowded_out>("vent_crowded_out"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -67,6 +67,9 @@ struct DiagnosticsRow {
   // Water pressures raised to the air's beside them by numerics.gap_water_floor since the previous row
   // (particle-steps; a guard of the one equation, mps/gap_water_floor.hpp).
   std::int64_t gap_water_floors = 0;
+  // Gas that entered a vent's box within l0/2 of its column's gas and was let out through the vent since the previous
+  // row (particles; counted in vented_out too; mps/gas_vent.cpp, placeEnteringGas).
+  std::int64_t vent_crowded_out = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -13,6 +13,9 @@
 //    each neighbour sees it moving as itself, so a column cannot draw the air it follows; with the columns'
 //    velocities in that divergence, a column and the air in front of it fed on each other at a vent's edges on the
 //    stabilised gas operators: tests/test_gas_vent.cpp, docs/waterfall.md);
+//  * gas that enters the box from the domain joins its column on the column's lattice (its line across the vent,
+//    its sites l0 apart along it), or leaves through the vent where its site is held (gas_vent.cpp,
+//    placeEnteringGas): the columns stay lattices, so what the vent gives back to the domain is evenly spaced;
 //  * gas that passes the outer face leaves the domain (removed, counted); where a column has moved inward so far
 //    that one more lattice layer fits between its outermost particle and the outer face, that layer is created
 //    with the column's velocity (as an inflow buffer creates its layers, open_boundaries.hpp).
@@ -60,6 +63,7 @@ struct VentExchange {
   std::int64_t gas_in = 0;      // gas created at outer faces
   std::int64_t gas_out = 0;     // gas removed past outer faces
   std::int64_t liquid_out = 0;  // liquid removed past outer faces
+  std::int64_t gas_crowded_out = 0;  // of gas_out: gas that entered a box within l0/2 of its column's gas
   std::vector<std::int64_t> gas_in_by_vent, gas_out_by_vent;  // the same per vent, in the case's order
 };
 
