@@ -26,7 +26,11 @@
 //        particle (12 in 2D and 32 in 3D for R = 2.1 l0). A deficit means open space next to the gas, e.g.
 //        the open top of the domain. A particle that was enclosed at the previous step (`was_enclosed`, when
 //        given) is exempt from this count: inside a moving bubble the gas opens small gaps next to the liquid,
-//        which do not make the bubble open.
+//        which do not make the bubble open. It is exempt from the first rule too (since the twentieth session): a
+//        bubble that drifts onto a wall stays a bubble. As open gas it was invisible to the liquid, and a bubble
+//        under waterfall_small's plunge point that came within R of the pool's floor was thrown out at 120 m/s
+//        14 ms later (docs/two-phase.md). Gas that joins it unenclosed, or air that reaches the atmosphere, still
+//        opens the region.
 //    A lone gas particle surrounded by liquid is a bubble of one particle.
 //  * In a closed gas domain (numerics.gas_domain = "closed", `closed_small_region` > 0) there is no open space, so
 //    a region of fewer than closed_small_region particles that touches liquid is enclosed whatever else it borders
