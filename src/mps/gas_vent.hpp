@@ -13,9 +13,9 @@
 //    each neighbour sees it moving as itself, so a column cannot draw the air it follows; with the columns'
 //    velocities in that divergence, a column and the air in front of it fed on each other at a vent's edges on the
 //    stabilised gas operators: tests/test_gas_vent.cpp, docs/waterfall.md);
-//  * gas that enters the box from the domain joins its column on the column's lattice (its line across the vent,
-//    its sites l0 apart along it), or leaves through the vent where its site is held (gas_vent.cpp,
-//    placeEnteringGas): the columns stay lattices, so what the vent gives back to the domain is evenly spaced;
+//  * gas that enters the box from the domain joins its column: it is put on the column's line across the vent,
+//    keeping its place along it, with the column's velocity, or leaves through the vent where it would lie within
+//    l0/2 of the column's gas (gas_vent.cpp, placeEnteringGas), so the columns give back no close pairs;
 //  * gas that passes the outer face leaves the domain (removed, counted); where a column has moved inward so far
 //    that one more lattice layer fits between its outermost particle and the outer face, that layer is created
 //    with the column's velocity (as an inflow buffer creates its layers, open_boundaries.hpp).
