@@ -1,7 +1,8 @@
 // Gas vents (src/mps/gas_vent.hpp): a vent's columns move with the air in front of them, gas leaves past the outer
-// face and enters there one lattice layer at a time, air entering from the domain joins its column's line; air flowing through a duct between two vents slows by the
-// dynamic pressure of the air it draws in (Bernoulli) and every gas particle is accounted for; water filling a tank pushes its air out of a vent at the ambient pressure,
-// where the sealed tank's air is compressed; the case-file checks.
+// face and enters there one lattice layer at a time, air entering from the domain joins its column's line; air
+// flowing through a duct between two vents slows by the dynamic pressure of the air it draws in (Bernoulli) and every
+// gas particle is accounted for; water filling a tank pushes its air out of a vent at the ambient pressure, where the
+// sealed tank's air is compressed; the case-file checks.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -87,7 +87,7 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
     dispersed[i] = options.dispersed_fraction > 0.0 && neighbours > 0 &&
                    liquid_neighbours >= options.dispersed_fraction * neighbours;
     const bool exempt = was_enclosed && static_cast<std::size_t>(i) < was_enclosed->size() && (*was_enclosed)[i];
-    open[i] = (foreign && !exempt) || (neighbours < min_neighbours && !exempt);
+    open[i] = !exempt && (foreign || neighbours < min_neighbours);
   }
 
   // Components, serially in index order (deterministic whatever the thread count), joining gas particles closer

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "case/scene.hpp"
 #include "mps/open_boundaries.hpp"
@@ -72,7 +73,7 @@ std::int64_t placeEnteringGas(Particles<D>& p, const Columns<D>& cols, const Ven
   const std::size_t n = start_vent.size();
   // Each column's gas along the vent's axis (its own, then what joins it).
   std::vector<std::vector<double>> held(cols.total);
-  std::vector<std::size_t> entering;
+  std::vector<std::pair<std::size_t, int>> entering;  // a particle and its column
   for (std::size_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Gas) continue;
     const double xi = vent.sign * p.position[i][a];
@@ -80,11 +81,10 @@ std::int64_t placeEnteringGas(Particles<D>& p, const Columns<D>& cols, const Ven
     const int col = cols.of(p.position[i], vent, l0);
     if (col < 0) continue;
     if (start_vent[i] == static_cast<int>(v)) held[col].push_back(xi);
-    else if (start_vent[i] < 0) entering.push_back(i);
+    else if (start_vent[i] < 0) entering.emplace_back(i, col);
   }
   std::int64_t left = 0;
-  for (const std::size_t i : entering) {
-    const int col = cols.of(p.position[i], vent, l0);
+  for (const auto& [i, col] : entering) {
     const double xi = vent.sign * p.position[i][a];
     auto& column = held[col];
     const bool taken =
@@ -195,7 +195,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
       }
     }
   }
-  if (std::any_of(remove.begin(), remove.end(), [](char r) { return r != 0; })) p.erase(remove);
+  if (exchange.gas_out + exchange.liquid_out > 0) p.erase(remove);  // gas_out holds the crowded-out gas too
   for (std::size_t k = 0; k < created_at.size(); ++k) {
     p.add(created_at[k], created_velocity[k], ParticleKind::Fluid, Phase::Gas);
     p.pressure.back() = ambientPressure<D>(created_at[k], gas_density, gravity);
