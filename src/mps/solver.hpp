@@ -17,6 +17,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -142,6 +143,7 @@ class MpsSolver {
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
   void makeThinRowsFreeSurface();
+  std::optional<double> bubbleSidePressure(std::size_t i) const;
   void findSurfaceTangents(const std::vector<Vec<D>>& last_gradient);
   void shiftParticles(double dt);
   // with `repulsive`, plus numerics.pressure_repulsion's term (pressure_repulsion.hpp): the correction's gradient

@@ -36,15 +36,18 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repuls
 // After the unknowns are chosen (solveLiquidPressure): thin rows become free surface, then the known terms of every
 // row (problem_.extra_rhs) and the Dirichlet values of the free-surface particles (surface_pressure_), from the
 // last step's pressure p^n at r*.
-// Rows whose fluid-side support (the particles taking part, within the Laplacian radius) is below
-// numerics.liquid_support_fraction of n0 would be set by the mirrored walls alone: they become free surface
-// (counted in report_.thin_support). Bubble rows and walls are left alone.
+// Rows whose liquid support (the liquid taking part, within the Laplacian radius) is below
+// numerics.liquid_support_fraction of n0 would be set by the mirrored walls or a bubble's gas alone: they become free
+// surface (counted in report_.thin_support). Bubble rows and walls are left alone. The bubbles' gas is not support:
+// it is an unknown of the liquid's density here (bubble_pressure.hpp), and a droplet among it with an unknown of its
+// own was a particle in incompressible water, held by a pressure of tens of kPa (the divergence of the 5 mm
+// waterfall at 1.07 s, docs/waterfall.md); such a row holds its bubble's pressure (stabilisedPressureTerms).
 template <int D>
 void MpsSolver<D>::makeThinRowsFreeSurface() {
   const auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
-  auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0; };
+  auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0 && !roles_.enclosed_gas[j]; };
   std::size_t thin = 0;
 #pragma omp parallel for schedule(static) reduction(+ : thin)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -55,6 +58,20 @@ void MpsSolver<D>::makeThinRowsFreeSurface() {
     }
   }
   report_.thin_support = thin;
+}
+
+// A free-surface liquid particle with a bubble's gas within the Laplacian radius lies on that bubble's inside (a
+// droplet in it, or a film one particle thick): its Dirichlet value is the bubble's pressure of the last step, P_B^n
+// (the weighted mean over that gas, uniform in one bubble). None: no bubble's gas within reach.
+template <int D>
+std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t i) const {
+  const auto& p = state_.particles;
+  double sum = 0.0, weight = 0.0;
+  forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian,
+                       [&](std::int32_t j) { return roles_.enclosed_gas[j] != 0 && problem_.takes_part[j] != 0; },
+                       [&](std::int32_t j, const Vec<D>&, double, double w) { sum += w * p.pressure[j], weight += w; });
+  if (weight == 0.0) return std::nullopt;
+  return sum / weight;
 }
 
 template <int D>
@@ -73,7 +90,7 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
     if (!problem_.takes_part[i] || roles_.enclosed_gas[i]) continue;
     last_gradient[i] = stabilisedGradient(i).value;
     if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid)
-      surface_pressure_[i] = surfaceParticlePressure<D>(last_gradient[i], constants_.l0);
+      surface_pressure_[i] = bubbleSidePressure(i).value_or(surfaceParticlePressure<D>(last_gradient[i], constants_.l0));
   }
   findSurfaceTangents(last_gradient);
   problem_.extra_rhs.assign(n, 0.0);
@@ -152,6 +169,7 @@ void MpsSolver<D>::shiftParticles(double dt) {
   template CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t, bool) const; \
   template void MpsSolver<D>::stabilisedPressureTerms(double);                       \
   template void MpsSolver<D>::makeThinRowsFreeSurface();                            \
+  template std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t) const; \
   template void MpsSolver<D>::shiftParticles(double);                              \
   template void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>&);
 MISTFALL_INSTANTIATE(2)
