@@ -259,3 +259,25 @@ TEST(CaseFileGas, BubbleGasKeys) {
   p.numerics += "bubble_regularisation = -1\n";
   EXPECT_HAS(errorOf(p.text()), "numerics.bubble_regularisation = -1 is out of range");
 }
+
+// numerics.closed_pockets (enclosed_gas.hpp): "small" by default; "unvented" needs a closed gas domain and a vent.
+TEST(CaseFileGas, ClosedPocketsKey) {
+  EXPECT_EQ(parseCase(Parts{}.text(), "t.toml").numerics.closed_pockets, NumericsConfig::ClosedPockets::Small);
+  const std::string air = "[[region]]\nname = \"air\"\nmaterial = \"gas\"\nmin = [0.0, 0.5]\nmax = [1.0, 1.0]\n";
+  const std::string vent = "[[vent]]\nname = \"top\"\nmin = [0.4, 1.0]\nmax = [0.6, 1.1]\ndirection = [0, 1]\n";
+  Parts p;
+  p.domain = "min = [0.0, 0.0]\nmax = [1.0, 1.1]\n";
+  p.physics = "[physics.gas]\nsound_speed = 340.0\n";
+  p.numerics += "gas_domain = \"closed\"\nclosed_pockets = \"unvented\"\n";
+  p.regions += air + vent;
+  EXPECT_EQ(parseCase(p.text(), "t.toml").numerics.closed_pockets, NumericsConfig::ClosedPockets::Unvented);
+  Parts no_vent = p;
+  no_vent.regions = Parts{}.regions + air;
+  EXPECT_HAS(errorOf(no_vent.text()), "this case has no [[vent]]");
+  Parts open = p;
+  open.numerics = Parts{}.numerics + "closed_pockets = \"unvented\"\n";
+  EXPECT_HAS(errorOf(open.text()), "allowed with numerics.gas_domain = \"closed\"");
+  Parts wrong;
+  wrong.numerics += "closed_pockets = \"all\"\n";
+  EXPECT_HAS(errorOf(wrong.text()), "allowed \"small\" or \"unvented\"");
+}

@@ -519,3 +519,42 @@ TEST(GasRegions, DispersedGasTouchingTheAirJoinsItAndNeverBridgesTwoRegions) {
   }
   EXPECT_EQ(lone_region, left_region) << "the dispersed particle joins the nearer pocket";
 }
+
+// A closed gas domain (numerics.closed_pockets): water on a walled floor under a layer of air, with two pockets of
+// air against the floor, of 18 particles each (above bubble_min_particles = 6). The right pocket holds a vent's gas
+// (the atmosphere), the left none. By size ("small") both are open gas: they touch the wall. With the atmosphere
+// ("unvented") the left is a pocket in the water, a bubble; the right reaches the ambient and stays open; the layer
+// above (the largest region) stays open too.
+TEST(GasRegions, AnUnventedPocketOnAWallIsABubbleOfAnySize) {
+  const Index<2> left(-8, 1), right(8, 1);
+  const auto p = makeLattice<2>(Index<2>(-14, -3), Index<2>(14, 12), [&](const Index<2>& k) {
+    if (k[1] < -1) return Site{true, ParticleKind::Dummy, Phase::Liquid};
+    if (k[1] == -1) return Site{true, ParticleKind::Wall, Phase::Liquid};
+    return k[1] >= 8 || inBall<2>(k, left, 2.3) || inBall<2>(k, right, 2.3) ? kGas : kLiquid;
+  });
+  const auto nl = neighbours<2>(p);
+  std::vector<char> atmosphere(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    atmosphere[i] = isGas(p.kind[i], p.phase[i]) && p.position[i][0] > at<2>(Index<2>(0, 0))[0] &&
+                    p.position[i][1] < at<2>(Index<2>(0, 5))[1];
+  GasRegionOptions by_size;
+  by_size.closed_small_region = 6;
+  GasRegionOptions unvented = by_size;
+  unvented.atmosphere = &atmosphere;
+  GasRegions small, vents;
+  findGasRegions<2>(p, nl, kLink, kL0, small, by_size);
+  findGasRegions<2>(p, nl, kLink, kL0, vents, unvented);
+  auto regionAt = [&](const GasRegions& r, const Index<2>& k) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if ((p.position[i] - at<2>(k)).norm() < 1e-9 * kL0) return r.region_of[i];
+    return std::int32_t{-1};
+  };
+  ASSERT_EQ(small.regionCount(), 3u);
+  ASSERT_EQ(vents.regionCount(), 3u);
+  EXPECT_EQ(small.regionSizes()[regionAt(small, left)], 18u);
+  EXPECT_FALSE(small.enclosed[regionAt(small, left)]) << "by size a pocket of 18 on the wall is open gas";
+  EXPECT_FALSE(small.enclosed[regionAt(small, right)]);
+  EXPECT_TRUE(vents.enclosed[regionAt(vents, left)]) << "no vent's gas: a pocket in the water";
+  EXPECT_FALSE(vents.enclosed[regionAt(vents, right)]) << "it holds a vent's gas: the atmosphere";
+  EXPECT_FALSE(vents.enclosed[regionAt(vents, Index<2>(0, 10))]) << "the layer of air above";
+}

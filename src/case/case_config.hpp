@@ -153,6 +153,10 @@ struct NumericsConfig {
   int solver_max_iterations = 1000;
   double max_escaped_fraction = 0.05;   // fluid fraction leaving the domain that stops the run
   int bubble_min_particles = 6;         // smaller gas regions inside the liquid move as liquid (docs/two-phase.md)
+  // Which gas regions of a closed gas domain touching the liquid are pockets in it (enclosed, bubbles), whatever else
+  // they border (enclosed_gas.hpp). Small: those below bubble_min_particles. Unvented: every one that holds no gas of a
+  // vent (the atmosphere), but the largest (needs [[vent]]s).
+  enum class ClosedPockets { Small, Unvented } closed_pockets = ClosedPockets::Small;
   GasDomain gas_domain = GasDomain::Open;
   // [m/s] terminal rise speed of entrained gas below a bubble's resolution (mps/entrained_gas_rise.hpp); 0 = none
   double entrained_gas_rise_speed = 0.0;

@@ -140,7 +140,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
                 "pressure_repulsion", "particle_shifting", "shift_limit", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
-                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles",
+                "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
@@ -210,6 +210,11 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");
+  if (int s = rd.choice(nm, np, "closed_pockets", {"small", "unvented"}); s >= 0)
+    n.closed_pockets = s == 0 ? NumericsConfig::ClosedPockets::Small : NumericsConfig::ClosedPockets::Unvented;
+  if (n.closed_pockets == NumericsConfig::ClosedPockets::Unvented && n.gas_domain != GasDomain::Closed)
+    rd.fail("numerics.closed_pockets = \"unvented\" is a rule of a closed gas domain (an open one's gas reaches the "
+            "atmosphere through its free surface); allowed with numerics.gas_domain = \"closed\", or \"small\"");
   rd.boolean(nm, np, "gap_water_floor", n.gap_water_floor);
   if (n.gap_water_floor && n.coupling != NumericsConfig::Coupling::OneEquation)
     rd.fail("numerics.gap_water_floor = true is a condition of the one equation's water rows (the two systems' water "
@@ -254,6 +259,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     c.regions.push_back(readRegion(rd, *ra[i].as_table(), "region[" + std::to_string(i) + "]", c));
   detail::validateRegions(c, source_name);
   detail::readOpenBoundaries(rd, root, c);
+  if (c.numerics.closed_pockets == NumericsConfig::ClosedPockets::Unvented && c.vents.empty())
+    rd.fail("numerics.closed_pockets = \"unvented\" tells the atmosphere by the vents' gas, and this case has no "
+            "[[vent]]; allowed with a [[vent]], or \"small\"");
   // The stabilised scheme takes gas under either coupling (experimental with open boundaries: docs/two-phase.md,
   // "The stabilised liquid under the two-systems coupling"). Water alone takes inflow and outflow boundaries: its
   // channel carries the critical energy of a frictionless free overfall (docs/waterfall.md,
