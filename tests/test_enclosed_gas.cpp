@@ -533,14 +533,15 @@ TEST(GasRegions, AnUnventedPocketOnAWallIsABubbleOfAnySize) {
     return k[1] >= 8 || inBall<2>(k, left, 2.3) || inBall<2>(k, right, 2.3) ? kGas : kLiquid;
   });
   const auto nl = neighbours<2>(p);
-  std::vector<char> atmosphere(p.size(), 0);
+  std::vector<int> vent_of(p.size(), -1);
   for (std::size_t i = 0; i < p.size(); ++i)
-    atmosphere[i] = isGas(p.kind[i], p.phase[i]) && p.position[i][0] > at<2>(Index<2>(0, 0))[0] &&
-                    p.position[i][1] < at<2>(Index<2>(0, 5))[1];
+    if (isGas(p.kind[i], p.phase[i]) && p.position[i][0] > at<2>(Index<2>(0, 0))[0] &&
+        p.position[i][1] < at<2>(Index<2>(0, 5))[1])
+      vent_of[i] = 0;  // the right pocket: a vent's gas
   GasRegionOptions by_size;
   by_size.closed_small_region = 6;
   GasRegionOptions unvented = by_size;
-  unvented.atmosphere = &atmosphere;
+  unvented.vent_of = &vent_of;
   GasRegions small, vents;
   findGasRegions<2>(p, nl, kLink, kL0, small, by_size);
   findGasRegions<2>(p, nl, kLink, kL0, vents, unvented);

@@ -137,21 +137,21 @@ void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_r
     if (open[i]) out.enclosed[out.region_of[i]] = 0;
   }
   // A closed gas domain has no open space: a small region touching liquid is a pocket in it, whatever it borders;
-  // with the atmosphere's gas given, so is any region touching liquid that holds none of it.
+  // with the vents given, so is any region touching liquid that holds no vent's gas.
   if (closed_small_region > 0) {
     std::vector<std::size_t> size(out.enclosed.size(), 0);
     std::vector<char> wet(out.enclosed.size(), 0), vented(out.enclosed.size(), 0);
-    const std::vector<char>* atmosphere = options.atmosphere;
+    const std::vector<int>* vent_of = options.vent_of;
     for (std::int64_t i = 0; i < count; ++i) {
       if (out.region_of[i] < 0) continue;
       ++size[out.region_of[i]];
       wet[out.region_of[i]] |= touches_liquid[i];
-      if (atmosphere && static_cast<std::size_t>(i) < atmosphere->size()) vented[out.region_of[i]] |= (*atmosphere)[i];
+      if (vent_of && static_cast<std::size_t>(i) < vent_of->size()) vented[out.region_of[i]] |= (*vent_of)[i] >= 0;
     }
     // The largest region is the box's air itself, never a pocket in the water.
     const std::size_t largest = static_cast<std::size_t>(std::max_element(size.begin(), size.end()) - size.begin());
     for (std::size_t r = 0; r < size.size(); ++r) {
-      const bool pocket = atmosphere ? !vented[r] : size[r] < closed_small_region;
+      const bool pocket = vent_of ? !vented[r] : size[r] < closed_small_region;
       if (r != largest && pocket && wet[r]) out.enclosed[r] = 1;
     }
   }

@@ -36,8 +36,8 @@
 //    a region of fewer than closed_small_region particles that touches liquid is enclosed whatever else it borders
 //    (walls, or gaps that leave it short of neighbours): a pocket of air dragged into the pool, against its floor or
 //    between sparse water, is entrained gas, not open air. The largest region (the box's air) never is.
-//    With `atmosphere` (numerics.closed_pockets = "unvented": per particle, 1 for gas of a vent, the ambient's) the
-//    size limit goes: every region touching liquid that holds none of the atmosphere's gas is a pocket, of any size.
+//    With `vent_of` (numerics.closed_pockets = "unvented": per particle, the vent holding it, or -1; a vent's gas is
+//    the ambient's) the size limit goes: every region touching liquid that holds no vent's gas is a pocket, of any size.
 //    An air pocket dragged under against a wall (the weir's face of the 5 mm waterfall, 18-20 particles) is then a
 //    bubble with one pressure, where as open gas its rows saw only the water's motion as walls and it was kicked at
 //    26-990 m/s (docs/waterfall.md).
@@ -99,7 +99,7 @@ struct GasRegionOptions {
   double join_radius = 0.0;                         // [m]; 0: the link radius
   double dispersed_fraction = 0.0;                  // 0: no gas counts as dispersed
   double dispersed_touch = 0.0;                     // [m]; 0: dispersed gas joins nothing
-  const std::vector<char>* atmosphere = nullptr;    // closed gas domain: the vents' gas (pockets of any size)
+  const std::vector<int>* vent_of = nullptr;        // closed gas domain: each particle's vent or -1 (pockets of any size)
 };
 
 template <int D>

@@ -313,12 +313,7 @@ GasRegionOptions MpsSolver<D>::gasRegionOptions(const std::vector<char>* was_enc
   if (config_.numerics.gas_domain == GasDomain::Closed)
     options.closed_small_region = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
   // numerics.closed_pockets = "unvented": the vents' gas at the step's start is the atmosphere
-  if (config_.numerics.closed_pockets == NumericsConfig::ClosedPockets::Unvented) {
-    const auto& p = state_.particles;
-    atmosphere_.assign(p.size(), 0);
-    for (std::size_t i = 0; i < p.size() && i < vent_at_start_.size(); ++i) atmosphere_[i] = isVentGas(i);
-    options.atmosphere = &atmosphere_;
-  }
+  if (config_.numerics.closed_pockets == NumericsConfig::ClosedPockets::Unvented) options.vent_of = &vent_at_start_;
   options.join_radius = config_.numerics.gas_region_link * constants_.l0;
   options.dispersed_fraction = config_.numerics.dispersed_gas_fraction;
   options.dispersed_touch = config_.numerics.dispersed_gas_touch * constants_.l0;

@@ -209,7 +209,6 @@ class MpsSolver {
   GasRegions regions_;
   CouplingRoles roles_;
   PressureProblem problem_;
-  mutable std::vector<char> atmosphere_;     // numerics.closed_pockets = "unvented": the vents' gas (gasRegionOptions)
   std::vector<double> surface_pressure_;     // stabilised: Dirichlet values of free-surface particles (empty: 0)
   SurfaceTangents<D> surface_tangents_;      // stabilised: near the free surface, its normal (surface_tangent.hpp)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
