@@ -7,15 +7,16 @@ likewise the liquid's), and measures the three features the paper describes, on 
   sheet      the mean vertical air velocity beside the falling sheet, on each face, over the rows between the
              brink and the pool (the sheet: the liquid-covered nodes of each row right of the brink): negative
              when the sheet drags the air down;
-  cavity     the circulation of the mean air velocity around the cavity behind the sheet (from the back wall to
-             the sheet, from the pool to the channel bed), and the mean vertical air velocity along the back wall:
+  cavity     the circulation of the mean air velocity around the cavity behind the sheet (from the back wall's
+             face to 2 nodes short of the sheet in each row, from the pool to the channel bed; the sum of the
+             circulations around its grid cells), and the mean vertical air velocity along the back wall:
              a recirculation turns clockwise (negative circulation, air rising at the back wall);
   plunge     the mean vertical air velocity in front of the plunge point (downstream of where the sheet meets
              the pool, just above the pool): positive when the air rises there.
 It prints the table and writes, in OUT (default RUN_DIR/plots): air_flow.csv (the table), mean_velocity.png and
 mean_turbulence.png (the averaged fields drawn as tools/plot_fields.py draws one frame).
 The geometry defaults are those of cases/waterfall*.toml (brink at x = 0.30 m, y = 0.435 m under a bed whose
-underside is y = 0.395 m; pool surface y = 0.15 m).
+underside is y = 0.395 m; pool surface y = 0.15 m; the back wall's face at x = 0).
 Exit codes: 0 done; 1 bad input (no fields, empty window, bad option), with a one-line message on stderr.
 Needs Debian's python3-numpy and python3-matplotlib; run it with /usr/bin/python3.
 """
@@ -64,7 +65,7 @@ def mean_fields(paths, t_from, t_to):
     return grid, mean, count
 
 
-def measure(grid, mean, brink, bed, pool, back_wall=None):
+def measure(grid, mean, brink, bed, pool, back_wall=0.0):
     h = grid["spacing"][0]
     x = grid["origin"][0] + h * np.arange(grid["dims"][0])
     y = grid["origin"][1] + grid["spacing"][1] * np.arange(grid["dims"][1])
@@ -93,21 +94,25 @@ def measure(grid, mean, brink, bed, pool, back_wall=None):
             plunge_x = x[last] if plunge_x is None else max(plunge_x, x[last])
     if not sheet_left:
         raise PlotError("no falling sheet found between the brink and the pool (is this a waterfall run?)")
-    # The cavity behind the sheet: nodes from the back wall to 2 nodes short of the sheet, pool to bed.
-    rows = [j for j in sheet_left if y[j] <= bed - h]
-    right = min(sheet_left[j] for j in rows) - 2 * h if rows else brink[0] - 2 * h
-    # The back wall's face: --back-wall, or (by default, as before) the grid's first node, whose next node starts the
-    # cavity. The shipped cases' grids start at the domain's edge, inside the wall (x = -0.04 m): there the default
-    # probes the wall and the cavity vent's gas (docs/two-phase.md), and --back-wall 0 reads the cavity's own air.
-    left = x[0] + h if back_wall is None else back_wall - 1e-9
-    ic = np.where((x >= left) & (x <= right))[0]
-    jc = np.where((y >= pool + 2 * h) & (y <= bed - h))[0]
+    # The cavity behind the sheet: from the back wall's face to 2 nodes short of the sheet in each row (the sheet leans
+    # downstream as it falls, so the cavity widens downwards), from the pool to the channel bed. Its circulation is
+    # the sum over the grid cells inside it of the circulation around each cell (trapezoidal edges): by Stokes, the
+    # line integral around its staircase boundary. Until the twenty-second session the cavity stopped at a vertical
+    # line 2 nodes short of the sheet's highest (leftmost) point, and the back wall's default was the grid's second
+    # node, inside the wall of the shipped cases (x = -0.03 m), where the air is at rest: it read 0.000.
+    left = back_wall - 1e-9
+    jc = [j for j in range(len(y)) if pool + 2 * h <= y[j] <= bed - h]
+    edge = {j: sheet_left[j] - 2 * h for j in jc if j in sheet_left}
+    fallback = min(edge.values()) if edge else brink[0] - 2 * h
+    inside = np.zeros(gas.shape, dtype=bool)
+    for j in jc:
+        inside[j] = (x >= left) & (x <= edge.get(j, fallback) + 1e-9)
     u = mean["gas_velocity"][..., 0]
-    circulation = 0.0
-    if ic.size >= 2 and jc.size >= 2:
-        i0, i1, j0, j1 = ic[0], ic[-1], jc[0], jc[-1]
-        circulation += np.sum(u[j0, i0:i1]) * h - np.sum(u[j1, i0:i1]) * h       # bottom (+x), top (-x)
-        circulation += np.sum(vy[j0:j1, i1]) * h - np.sum(vy[j0:j1, i0]) * h     # right (+y), left (-y)
+    cells = inside[:-1, :-1] & inside[:-1, 1:] & inside[1:, :-1] & inside[1:, 1:]
+    around = h * (0.5 * (u[:-1, :-1] + u[:-1, 1:]) - 0.5 * (u[1:, :-1] + u[1:, 1:])
+                  + 0.5 * (vy[:-1, 1:] + vy[1:, 1:]) - 0.5 * (vy[:-1, :-1] + vy[1:, :-1]))
+    circulation = float(np.sum(around[cells]))
+    ic = np.where(x >= left)[0]
     back = [vy[j, i] for j in jc for i in ic[:2] if gas[j, i]]
     plunge = []
     if plunge_x is not None:
@@ -119,7 +124,7 @@ def measure(grid, mean, brink, bed, pool, back_wall=None):
     return [
         ("sheet", "air beside the sheet, behind it: mean v_y [m/s]", avg(behind), len(behind), "< 0"),
         ("sheet", "air beside the sheet, in front: mean v_y [m/s]", avg(front), len(front), "< 0"),
-        ("cavity", "circulation around the cavity behind the sheet [m^2/s]", circulation, ic.size * jc.size, "< 0"),
+        ("cavity", "circulation around the cavity behind the sheet [m^2/s]", circulation, int(cells.sum()), "< 0"),
         ("cavity", "air along the back wall: mean v_y [m/s]", avg(back), len(back), "> 0"),
         ("plunge", "air in front of the plunge point: mean v_y [m/s]", avg(plunge), len(plunge), "> 0"),
     ]
@@ -133,9 +138,9 @@ def main():
     parser.add_argument("--brink", type=float, nargs=2, default=[0.30, 0.435], metavar=("X", "Y"))
     parser.add_argument("--bed", type=float, default=0.395, help="underside of the channel bed [m]")
     parser.add_argument("--pool", type=float, default=0.15, help="pool surface [m]")
-    parser.add_argument("--back-wall", type=float, default=None,
+    parser.add_argument("--back-wall", type=float, default=0.0,
                         help="x of the back wall's face [m]; the cavity's columns start at the first node at or past it "
-                             "(default: the node after the grid's first)")
+                             "(default 0)")
     parser.add_argument("--out", help="folder for the table and PNGs (default RUN_DIR/plots)")
     parser.add_argument("--dpi", type=int, default=100)
     try:
