@@ -63,7 +63,7 @@ def main():
 
 
 def run(args):
-    l0, g, q, x_brink, y_bed, _, _ = read_overfall_case(args.run_dir, "channel_bed", None)
+    l0, g, q, x_brink, y_bed, _, _, _ = read_overfall_case(args.run_dir, "channel_bed", None)
     y_floor, x_weir, y_crest, u_t = read_case_extra(args.run_dir)
     chosen = frames_between(args.run_dir, args.t_from, args.t_to)
     level_lo, level_hi = x_weir - 0.40, x_weir - 0.05

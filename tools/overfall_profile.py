@@ -12,13 +12,20 @@ the brink in a slab of height l0, pooled over the same frames (the median ignore
 pool is left out by stopping above it). Compared
 with the ballistic path of a point leaving the brink's mid-depth y0 = bed + h_b/2 with the measured mean brink
 velocity (U, V): x = x_b + U t, y = y0 + V t - g t^2 / 2, and with the path from Rouse's brink (U = q / h_b, V = 0).
+Also with the path of the jet's own horizontal velocity U_j = (sum of u^2 + p / rho) / (sum of u) over the brink
+window's water in all the frames: the brink section's x-momentum flux, pressure included, over its mass flux. The
+pressure at the brink is not yet the ambient (the streamlines still curve there), so the water goes on accelerating
+past the brink until it is; past it no horizontal force acts on the falling sheet but the air's, and the sheet keeps
+U_j (momentum balance of the free overfall: Rouse 1936; Anderson 1967, Hager 1983). U, the mean velocity at the
+brink, lies below U_j by the pressure's share.
 
 The case file copy RUN_DIR/case.toml gives l0, g, q (the sum of the [[inflow]] discharges) and the brink: the
 upper downstream corner of the wall region named by --bed-region (default channel_bed). The pool level (the end
 of the sheet) is --pool-y, by default the crest of the region named weir; the sheet is measured down to
 --sheet-bottom, by default the pool level plus 35 % of the drop from the bed (above the splash).
 Writes RUN_DIR/plots/overfall.png (the sheet of the last frame used, the measured and ballistic paths) and
-RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse), and
+RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse, ballistic x
+with the brink's momentum flux U_j), and
 prints a summary.
 Channel energy: in bins of --energy-bin metres from the inflow's gate (the downstream edge of region 'gate', else
 of the first [[inflow]] box) to the brink, the water's depth h (as at the brink: particles above the bed less l0/2,
@@ -75,7 +82,9 @@ def read_overfall_case(run_dir, bed_region, pool_y):
     except PlotError:
         inflows = doc.get("inflow", [])
         channel_start = float(inflows[0]["max"][0]) if inflows and "max" in inflows[0] else float("nan")
-    return float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y, channel_start
+    density = float(doc.get("physics", {}).get("liquid", {}).get("density", 1000.0))
+    return (float(spacing), abs(float(gravity[1])), q, float(bed_max[0]), float(bed_max[1]), pool_y, channel_start,
+            density)
 
 
 def channel_energy(frames, l0, g, start, x_brink, y_bed, length):
@@ -155,7 +164,8 @@ def main():
 
 
 def run(args):
-    l0, g, q, x_brink, y_bed, pool_y, channel_start = read_overfall_case(args.run_dir, args.bed_region, args.pool_y)
+    l0, g, q, x_brink, y_bed, pool_y, channel_start, rho = read_overfall_case(args.run_dir, args.bed_region,
+                                                                              args.pool_y)
     window = args.window or 2.0 * l0
     chosen = frames_between(args.run_dir, args.t_from, args.t_to)
     bottom = args.sheet_bottom if args.sheet_bottom is not None else pool_y + 0.35 * (y_bed - pool_y)
@@ -167,6 +177,7 @@ def run(args):
     if not args.energy_bin > 0.0:
         raise PlotError(f"--energy-bin must be > 0 m, got {args.energy_bin}")
     depth, edge_depth, u_mean, v_mean = [], [], [], []
+    mass_flux, momentum_flux = 0.0, 0.0  # sums of u and of u^2 + p / rho over the brink window, all frames
     slab_x = [[] for _ in levels]
     channel_frames = []
     for _, path in chosen:
@@ -180,6 +191,8 @@ def run(args):
         if at_brink.any():
             u_mean.append(vel[at_brink, 0].mean())
             v_mean.append(vel[at_brink, 1].mean())
+            mass_flux += vel[at_brink, 0].sum()
+            momentum_flux += (vel[at_brink, 0] ** 2 + a["pressure"][liquid][at_brink] / rho).sum()
         channel_frames.append((x, y, vel[:, 0]))
         sheet = x > x_brink
         for k, level in enumerate(levels):
@@ -198,17 +211,22 @@ def run(args):
     measured = np.array([np.median(xs) if xs else np.nan for xs in slab_x])
     from_brink = ballistic_x(y_bed + 0.5 * h_b, u_b, v_b, levels)
     from_rouse = ballistic_x(y_bed + 0.5 * h_rouse, q / h_rouse, 0.0, levels)
+    u_jet = momentum_flux / mass_flux if mass_flux > 0.0 else float("nan")
+    from_jet = ballistic_x(y_bed + 0.5 * h_b, u_jet, v_b, levels)
     valid = ~np.isnan(measured)
     rms_brink = float(np.sqrt(np.nanmean((measured - from_brink) ** 2))) if valid.any() else float("nan")
     rms_rouse = float(np.sqrt(np.nanmean((measured - from_rouse) ** 2))) if valid.any() else float("nan")
+    rms_jet = float(np.sqrt(np.nanmean((measured - from_jet) ** 2))) if valid.any() else float("nan")
+    offset_jet = float(np.nanmean(measured - from_jet)) if valid.any() else float("nan")
+    scatter_jet = float(np.nanstd(measured - from_jet)) if valid.any() else float("nan")
 
     out_dir = os.path.join(args.run_dir, "plots")
     os.makedirs(out_dir, exist_ok=True)
     csv_path = os.path.join(out_dir, "overfall.csv")
     with open(csv_path + ".tmp", "w") as f:
-        f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse\n")
+        f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse,x_ballistic_brink_momentum\n")
         for k, level in enumerate(levels):
-            f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f}\n")
+            f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f},{from_jet[k]:.5f}\n")
     os.replace(csv_path + ".tmp", csv_path)
 
     _, a = read_vtp(chosen[-1][1])
@@ -218,6 +236,7 @@ def run(args):
     ax.plot(measured, levels, "o-", c="navy", ms=3, label="sheet, median x (measured)")
     ax.plot(from_brink, levels, "--", c="crimson", label=f"ballistic, measured brink (U={u_b:.2f}, V={v_b:.2f} m/s)")
     ax.plot(from_rouse, levels, ":", c="darkgreen", label=f"ballistic, Rouse brink (U={q / h_rouse:.2f} m/s)")
+    ax.plot(from_jet, levels, "-.", c="darkorange", label=f"ballistic, brink momentum (U_j={u_jet:.2f} m/s)")
     ax.set_xlim(x_brink - 0.15, x_brink + 0.3)
     ax.set_ylim(pool_y - 0.05, y_bed + 0.08)
     ax.set_aspect("equal")
@@ -242,6 +261,9 @@ def run(args):
     print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
     print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
+    print(f"jet velocity    the brink's momentum flux (pressure included) over its mass flux U_j = {u_jet:.3f} m/s; "
+          f"nappe's x against the ballistic path with U_j: RMS {100 * rms_jet:.2f} cm, mean {100 * offset_jet:+.2f} cm, "
+          f"scatter about the mean {100 * scatter_jet:.2f} cm")
     energy = channel_energy(channel_frames, l0, g, channel_start, x_brink, y_bed, args.energy_bin)
     if energy:
         print(f"channel energy  x [m], depth h [cm], mean U [m/s], Froude U/sqrt(g h), E/h_c (critical: 1.5):")

@@ -8,10 +8,10 @@ def _array(name, typ, comps, values):
             + " ".join(str(x) for x in values) + "</DataArray>\n")
 
 
-def write_frames(run, times, points, velocities):
+def write_frames(run, times, points, velocities, pressures=None):
     """Writes one frame per time into run/frames and run/frames.pvd. points: [(x, y, kind, phase)];
     velocities: [(u, v)] of the same length, the same in every frame. Or, for frames that differ, points and
-    velocities are lists of such lists, one per time."""
+    velocities are lists of such lists, one per time. pressures: [p] per point, the same in every frame (default 0)."""
     os.makedirs(os.path.join(run, "frames"), exist_ok=True)
     per_frame = isinstance(points[0], list)
     all_points, all_velocities = points, velocities
@@ -28,7 +28,7 @@ def write_frames(run, times, points, velocities):
                 + _array("kind", "UInt8", 1, [p[2] for p in points])
                 + _array("phase", "UInt8", 1, [p[3] for p in points])
                 + _array("velocity", "Float64", 3, [c for w in velocities for c in (w[0], w[1], 0.0)])
-                + _array("pressure", "Float64", 1, [0.0] * n)
+                + _array("pressure", "Float64", 1, pressures if pressures is not None else [0.0] * n)
                 + '</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n')
         name = f"frame_{k:05d}.vtp"
         with open(os.path.join(run, "frames", name), "w") as f:

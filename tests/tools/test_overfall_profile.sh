@@ -5,7 +5,8 @@
 # above the edge found 1 cm) moving at (U, V) = (0.7, -0.1) m/s up to the brink, a sheet of particles on the
 # ballistic path of a point leaving the brink's mid-depth with that velocity (three per level and one stray drop
 # far off, which the median must ignore), and a pool. The tool must find the 2 cm depth, the velocity, and the
-# sheet on that path (RMS under 2 mm), and the channel's specific energy; bad input exits 1 with a message.
+# sheet on that path (RMS under 2 mm), the jet's velocity from the brink's momentum flux with the channel's water at
+# 70 Pa, and the channel's specific energy; bad input exits 1 with a message.
 # Usage: test_overfall_profile.sh SOURCE_DIR
 set -euo pipefail
 source_dir=$1
@@ -62,7 +63,8 @@ while level > 0.2:
     level -= l0
 for i in range(60):                       # pool and a wall row
     pts += [(0.005 + i * l0, 0.105, 0, 0), (0.005 + i * l0, -0.005, 1, 0), (0.005 + i * l0, 0.3, 0, 1)]
-write_frames(run, [0.5], pts, [(u, v)] * len(pts))
+# The channel's water at 70 Pa: the brink's momentum flux over its mass flux is U_j = u + p / (rho u) = 0.8 m/s.
+write_frames(run, [0.5], pts, [(u, v)] * len(pts), [70.0 if p[1] >= y_bed else 0.0 for p in pts])
 PY
 
 out=$("$py" "$tool" "$run")
@@ -80,6 +82,16 @@ assert abs(edge - 2.0) < 1e-9, edge
 assert abs(u - 0.7) < 1e-9 and abs(v + 0.1) < 1e-9, (u, v)
 assert abs(ratio - 2.0 / 2.967) < 0.002, ratio      # h_c = (0.016^2 / 9.81)^(1/3) = 2.967 cm
 assert rms < 0.2, rms
+# Against the path with U_j = 0.8 m/s the sheet (median 1 mm past the 0.7 m/s path) lies 1 mm - 0.1 m/s t behind, at
+# the levels from y_bed - l0 down to the pool + 35 % of the drop (0.425 ... 0.225 m).
+u_jet = float(re.search(r"U_j = ([0-9.]+) m/s", out).group(1))
+offset, scatter = (float(s) for s in re.search(r"mean ([-+0-9.]+) cm, scatter about the mean ([0-9.]+) cm", out).groups())
+assert abs(u_jet - 0.8) < 1e-9, u_jet
+times = [(-0.1 + math.sqrt(0.01 + 2 * 9.81 * (0.445 - (0.425 - 0.01 * k)))) / 9.81 for k in range(21)]
+lag = [0.1 - 10.0 * t for t in times]          # in cm: 1 mm - 0.1 m/s t
+mean = sum(lag) / len(lag)
+assert abs(offset - mean) < 0.006, (offset, mean)
+assert abs(scatter - math.sqrt(sum((d - mean) ** 2 for d in lag) / len(lag))) < 0.006, scatter
 # The channel's specific energy in 4 cm bins from the inflow box's end (x = 0.04; no gate region here) to the
 # brink: water only in the bins [0.20, 0.24) and [0.24, 0.28), 4 columns of 2 rows each: h = 8 l0^2 / 0.04 = 2 cm,
 # U = 0.7 m/s, E = h + U^2 / (2 g) = 1.516 h_c; the bins without water are left out.
