@@ -6,7 +6,8 @@ plane jet. Its thickness and speed at the pool are those of the falling water: V
 = q / h the brink velocity (Rouse's brink, h = 0.715 h_c, from mid-depth), and B = q / V0. A plane turbulent jet
 keeps its momentum flux, and its centreline speed decays as u_c = K V0 (B / s)^(1/2) with the distance s from where
 it enters (Albertson, Dai, Jensen & Rouse 1950: K = 2.28; Rajaratnam 1976, "Turbulent Jets": K = 2.47, both with B
-the slot width). Air bubbles go down with the jet to where u_c has fallen to their rise speed u_t:
+the slot width), past its potential core, s = K^2 B (5.2-6.1 B), in which it keeps V0: the correlation used is
+min(K V0 (B / s)^(1/2), V0). Air bubbles go down with the jet to where u_c has fallen to their rise speed u_t:
 H = B (K V0 / u_t)^2 (the plane-jet form of Clanet & Lasheras' (1997) argument for round jets), with u_t the
 case's numerics.entrained_gas_rise_speed (default 0.23 m/s).
 
@@ -120,7 +121,8 @@ def run(args):
         warnings.simplefilter("ignore", RuntimeWarning)
         u_c = np.nanmedian(np.array(peaks), axis=0)
     s = centres / math.sin(theta)
-    corr = [k * v0 * np.sqrt(b0 / s) for k in PLANE_JET_K]
+    # Within the potential core (s < K^2 B, about 5-6 B) the centreline keeps V0: the decay law would exceed it there.
+    corr = [np.minimum(k * v0 * np.sqrt(b0 / s), v0) for k in PLANE_JET_K]
     share, _ = np.histogram(all_depths, bins=depth_bins)
     share = share / max(1, len(all_depths))
 

@@ -5,6 +5,7 @@
 # computes them), three air particles among the water at depths 2.5, 6.5 and 12.5 cm, and air above the pool and at
 # its surface, which are not under water. The tool must find the 14 cm level, the three air particles and their
 # depths, and the jet at 1.00 of the correlation; bad input exits 1 with a message.
+# The correlation is capped at V0 within the jet's potential core.
 # Usage: test_aeration_depth.sh SOURCE_DIR
 set -euo pipefail
 source_dir=$1
@@ -89,6 +90,17 @@ assert num(r"penetration H = B \(K V0/u_t\)\^2 = ([0-9.]+)-") > 3.0  # q V0 K^2 
 print("aeration_depth: level, air under water and jet recovered")
 PY
 test -s "$run/plots/aeration.csv"
+# Within the potential core (s < K^2 B) the correlation keeps the jet's V0: it never exceeds V0, and the shallowest
+# band (s about half a centimetre, under one B) reads V0 itself.
+"$py" - "$run/plots/aeration.csv" "$out" <<'PY'
+import csv, re, sys
+v0 = float(re.search(r"V0 = ([0-9.]+) m/s", sys.argv[2]).group(1))
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["u_c_rajaratnam"] != "nan"]
+for name in ("u_c_albertson", "u_c_rajaratnam"):
+    values = [float(r[name]) for r in rows]
+    assert max(values) < v0 + 0.006, (name, max(values), v0)
+    assert abs(values[0] - v0) < 0.006, (name, values[0], v0)
+PY
 
 # Bad input: a missing run, no frame in the window.
 if "$py" "$tool" "$work/missing" 2>"$work/err"; then echo "missing run accepted"; exit 1; fi
