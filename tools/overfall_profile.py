@@ -16,7 +16,7 @@ Also with the path of the jet's own horizontal velocity U_j = (sum of u^2 + p / 
 window's water in all the frames: the brink section's x-momentum flux, pressure included, over its mass flux. The
 pressure at the brink is not yet the ambient (the streamlines still curve there), so the water goes on accelerating
 past the brink until it is; past it no horizontal force acts on the falling sheet but the air's, and the sheet keeps
-U_j (momentum balance of the free overfall: Rouse 1936; Anderson 1967, Hager 1983). U, the mean velocity at the
+U_j (momentum balance of the free overfall: Rouse 1936; Hager 1983). U, the mean velocity at the
 brink, lies below U_j by the pressure's share.
 
 The case file copy RUN_DIR/case.toml gives l0, g, q (the sum of the [[inflow]] discharges) and the brink: the
