@@ -184,7 +184,7 @@ def run(args):
         _, a = read_vtp(path)
         liquid = (a["kind"] == KIND_FLUID) & (a["phase"] == 0)
         x, y = a["Points"][liquid, 0], a["Points"][liquid, 1]
-        vel = a["velocity"][liquid]
+        vel, pressure = a["velocity"][liquid], a["pressure"][liquid]
         at_brink = (x > x_brink - window) & (x <= x_brink) & (y > y_bed - 0.5 * l0)
         depth.append(at_brink.sum() * l0 * l0 / window)
         edge_depth.append((at_brink & (x > x_brink - l0)).sum() * l0)
@@ -192,7 +192,7 @@ def run(args):
             u_mean.append(vel[at_brink, 0].mean())
             v_mean.append(vel[at_brink, 1].mean())
             mass_flux += vel[at_brink, 0].sum()
-            momentum_flux += (vel[at_brink, 0] ** 2 + a["pressure"][liquid][at_brink] / rho).sum()
+            momentum_flux += (vel[at_brink, 0] ** 2 + pressure[at_brink] / rho).sum()
         channel_frames.append((x, y, vel[:, 0]))
         sheet = x > x_brink
         for k, level in enumerate(levels):
@@ -216,9 +216,9 @@ def run(args):
     valid = ~np.isnan(measured)
     rms_brink = float(np.sqrt(np.nanmean((measured - from_brink) ** 2))) if valid.any() else float("nan")
     rms_rouse = float(np.sqrt(np.nanmean((measured - from_rouse) ** 2))) if valid.any() else float("nan")
-    rms_jet = float(np.sqrt(np.nanmean((measured - from_jet) ** 2))) if valid.any() else float("nan")
-    offset_jet = float(np.nanmean(measured - from_jet)) if valid.any() else float("nan")
-    scatter_jet = float(np.nanstd(measured - from_jet)) if valid.any() else float("nan")
+    off_jet = measured - from_jet
+    rms_jet, offset_jet, scatter_jet = ((float(np.sqrt(np.nanmean(off_jet ** 2))), float(np.nanmean(off_jet)),
+                                         float(np.nanstd(off_jet))) if valid.any() else (float("nan"),) * 3)
 
     out_dir = os.path.join(args.run_dir, "plots")
     os.makedirs(out_dir, exist_ok=True)
