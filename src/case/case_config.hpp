@@ -204,7 +204,7 @@ struct NumericsConfig {
   // How a bubble's gas moves (docs/two-phase.md). FollowLiquid: with the liquid's velocity extended into the bubble,
   // re-spaced in position by the gas system. OwnPressure: like open gas, by its own pressure gradient from the gas
   // system (the paper's single-phase view of the gas), velocity and position.
-  enum class BubbleGasMotion { FollowLiquid, OwnPressure } bubble_gas_motion = BubbleGasMotion::FollowLiquid;
+  enum class BubbleGasMotion { FollowLiquid, OwnPressure, FollowVoid } bubble_gas_motion = BubbleGasMotion::FollowLiquid;
   // The bubble's rows of the gas system use c = min(c_g, this * l0 / dt) (a regularisation: a bubble and its liquid
   // ring form a block with no free surface, whose pressure level an incompressible gas leaves undetermined); 0 = none
   double bubble_regularisation = 10.0;

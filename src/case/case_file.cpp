@@ -201,9 +201,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
     rd.fail("numerics.gas_operators = \"stabilised\" needs numerics.pressure_source = \"mixed\" (the walls act through the "
             "velocity-divergence source; docs/case-file.md)");
   rd.number(nm, np, "dispersed_gas_touch", {0.0, 5.0, false, false}, n.dispersed_gas_touch);
-  if (int s = rd.choice(nm, np, "bubble_gas_motion", {"follow_liquid", "own_pressure"}); s >= 0)
-    n.bubble_gas_motion = s == 0 ? NumericsConfig::BubbleGasMotion::FollowLiquid
-                                 : NumericsConfig::BubbleGasMotion::OwnPressure;
+  if (int s = rd.choice(nm, np, "bubble_gas_motion", {"follow_liquid", "own_pressure", "follow_void"}); s >= 0)
+    n.bubble_gas_motion = s == 0   ? NumericsConfig::BubbleGasMotion::FollowLiquid
+                          : s == 1 ? NumericsConfig::BubbleGasMotion::OwnPressure
+                                   : NumericsConfig::BubbleGasMotion::FollowVoid;
   rd.number(nm, np, "bubble_regularisation", {0.0, 1e6, false, false}, n.bubble_regularisation);
   if (int s = rd.choice(nm, np, "coupling", {"two_systems", "one_equation"}); s >= 0)
     n.coupling = s == 0 ? NumericsConfig::Coupling::TwoSystems : NumericsConfig::Coupling::OneEquation;

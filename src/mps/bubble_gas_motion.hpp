@@ -6,8 +6,26 @@
 //    bubble's gas; open gas excluded), with w of eq. (14);
 //  * position: r = r* + dt (u - u*), then the gas system's pressure correction moves them without changing their
 //    velocity (re-spacing: gas squeezed by the liquid spreads through the bubble instead of blocking the liquid).
+// With numerics.bubble_gas_motion = "follow_void" the gas keeps the extension's departure from its mean over the
+// bubble and moves on average with the bubble's translation U_B: a harmonic extension carries no net motion of a
+// void that rises (the potential flow round a cylinder rising at U has the interface velocity U (sin 2t, -cos 2t),
+// whose harmonic extension is zero at the centre and zero on average), so without U_B the gas stays behind a bubble
+// that moves and only a soft gas lets the void move on. U_B is the velocity of the void's centroid X (Reynolds' transport theorem
+// on the bubble: d/dt int_B x dV = oint x (u.n) dS):
+//   V_B U_B = oint_B (x - X)(u.n) dS.
+// The liquid's velocity at the interface is known only at particles a spacing or two away, where a rising bubble's
+// dipole flow has decayed by (a/r)^2, so the surface integral is turned into one over the fluid around the bubble:
+// with a window psi = 1 on and near the bubble, falling smoothly to 0 (divergence theorem on the fluid F outside B,
+// div u = 0 there),
+//   V_B U_B = -int_F [psi u + (x - X)(u . grad psi)] dV,
+// which for the dipole flow gives U exactly at any window. Summed over the particles j around B (every active
+// particle but B's own gas: liquid, walls and dummies at rest, other gas with its velocity), each of volume l0^D:
+//   A U_B = M,  M = -l0^D sum_j [psi_j u_j + (x_j - X)(u_j . grad psi_j)],
+//              A = -l0^D sum_j [psi_j I + (x_j - X) grad psi_j^T],
+// A being the same sum for a uniform velocity (V_B I in the continuum), so a rigid translation is reproduced exactly.
 #pragma once
 
+#include <Eigen/Dense>
 #include <cstdint>
 #include <vector>
 
@@ -19,12 +37,63 @@
 namespace mistfall {
 
 inline constexpr int kBubbleVelocitySweeps = 4;  // each sweep reaches re further into the bubble
+// The window psi of U_B: 1 to kVoidWindowInner l0 beyond the bubble's farthest gas particle from its centroid, then
+// falling smoothly to 0 over kVoidWindowWidth l0; U_B is trusted where A's smallest eigenvalue is at least
+// kVoidWindowTrust V_B (A = V_B I in the continuum).
+inline constexpr double kVoidWindowInner = 0.5, kVoidWindowWidth = 3.0, kVoidWindowTrust = 0.5;
 
 // Sets the velocity of every enclosed gas particle (roles.enclosed_gas) to the extension of its neighbours'
 // velocities and moves it by dt times the change. The neighbour list must reach `re`.
+// The translation U_B of each bubble (region of `region_of`, `regions` of them) from the velocity of everything around
+// it (see above), spacing l0; zero for a region whose A is far from V_B I (too thin to define its centroid's motion:
+// then its gas moves as the extension alone).
+template <int D>
+std::vector<Vec<D>> voidTranslation(const Particles<D>& p, const CouplingRoles& roles,
+                                    const std::vector<std::int32_t>& region_of, std::size_t regions, double l0) {
+  using Mat = Eigen::Matrix<double, D, D>;
+  const std::size_t n = p.size();
+  std::vector<Vec<D>> centroid(regions, Vec<D>::Zero()), translation(regions, Vec<D>::Zero());
+  std::vector<double> count(regions, 0.0), reach(regions, 0.0);
+  auto inBubble = [&](std::size_t i) { return roles.enclosed_gas[i] && region_of[i] >= 0; };
+  for (std::size_t i = 0; i < n; ++i)
+    if (inBubble(i)) centroid[region_of[i]] += p.position[i], count[region_of[i]] += 1;
+  for (std::size_t b = 0; b < regions; ++b)
+    if (count[b] > 0) centroid[b] /= count[b];
+  for (std::size_t i = 0; i < n; ++i)
+    if (inBubble(i)) reach[region_of[i]] = std::max(reach[region_of[i]], (p.position[i] - centroid[region_of[i]]).norm());
+  const double cell = std::pow(l0, D);
+#pragma omp parallel for schedule(dynamic)
+  for (std::int64_t b = 0; b < static_cast<std::int64_t>(regions); ++b) {
+    if (count[b] == 0) continue;
+    const double inner = reach[b] + kVoidWindowInner * l0, width = kVoidWindowWidth * l0;
+    Mat a = Mat::Zero();
+    Vec<D> m = Vec<D>::Zero();
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!isActive(p.kind[j]) || (inBubble(j) && region_of[j] == b)) continue;
+      const Vec<D> arm = p.position[j] - centroid[b];
+      const double d = arm.norm();
+      if (d >= inner + width) continue;
+      double psi = 1.0;
+      Vec<D> grad = Vec<D>::Zero();
+      if (d > inner) {  // psi = 1 - smoothstep((d - inner) / width)
+        const double s = (d - inner) / width;
+        psi = 1.0 - s * s * (3.0 - 2.0 * s);
+        grad = (-6.0 * s * (1.0 - s) / (width * d)) * arm;
+      }
+      a -= cell * (psi * Mat::Identity() + arm * grad.transpose());
+      m -= cell * (psi * p.velocity[j] + arm * grad.dot(p.velocity[j]));
+    }
+    const double volume = count[b] * cell;
+    Eigen::SelfAdjointEigenSolver<Mat> eigen(0.5 * (a + a.transpose()));
+    if (eigen.eigenvalues().minCoeff() > kVoidWindowTrust * volume) translation[b] = a.colPivHouseholderQr().solve(m);
+  }
+  return translation;
+}
+
 template <int D>
 void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
-                               double dt) {
+                               double dt, const std::vector<Vec<D>>* translation = nullptr,
+                               const std::vector<std::int32_t>* region_of = nullptr) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> before(p.velocity.begin(), p.velocity.end()), next(n);
   for (int sweep = 0; sweep < kBubbleVelocitySweeps; ++sweep) {
@@ -46,6 +115,19 @@ void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const Co
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < n; ++i)
       if (roles.enclosed_gas[i]) p.velocity[i] = next[i];
+  }
+  // With a translation per bubble: the extension keeps its deformation (its departure from its mean over the
+  // bubble), and the bubble's gas moves on average with the void, U_B.
+  if (translation) {
+    std::vector<Vec<D>> mean(translation->size(), Vec<D>::Zero());
+    std::vector<double> count(translation->size(), 0.0);
+    for (std::int64_t i = 0; i < n; ++i)
+      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0) mean[(*region_of)[i]] += p.velocity[i], count[(*region_of)[i]] += 1;
+    for (std::int64_t i = 0; i < n; ++i)
+      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0) {
+        const auto b = (*region_of)[i];
+        p.velocity[i] += (*translation)[b] - mean[b] / count[b];
+      }
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)

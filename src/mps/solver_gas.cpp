@@ -283,8 +283,16 @@ void MpsSolver<D>::removeReleasedPoints() {
 // "own_pressure" (then it keeps its predicted velocity and the gas system corrects it like open gas).
 template <int D>
 void MpsSolver<D>::moveBubbleGas(double dt) {
-  if (config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure) return;
-  extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, constants_.re_number_density, dt);
+  using Motion = NumericsConfig::BubbleGasMotion;
+  if (config_.numerics.bubble_gas_motion == Motion::OwnPressure) return;
+  const double re = constants_.re_number_density;
+  if (config_.numerics.bubble_gas_motion == Motion::FollowVoid) {
+    const auto translation =
+        voidTranslation<D>(state_.particles, roles_, regions_.region_of, regions_.regionCount(), constants_.l0);
+    extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt, &translation, &regions_.region_of);
+    return;
+  }
+  extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt);
 }
 
 #define MISTFALL_INSTANTIATE(D)                              \
