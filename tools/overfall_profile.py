@@ -12,6 +12,9 @@ the brink in a slab of height l0, pooled over the same frames (the median ignore
 pool is left out by stopping above it). Compared
 with the ballistic path of a point leaving the brink's mid-depth y0 = bed + h_b/2 with the measured mean brink
 velocity (U, V): x = x_b + U t, y = y0 + V t - g t^2 / 2, and with the path from Rouse's brink (U = q / h_b, V = 0).
+Also with the path from the brink section itself, the last l0 before the edge (the window of the headline depth "over
+the last l0"): y0 = bed + h_edge/2 and that water's mean velocity; the 2 l0 window's mean velocity lies below the
+edge's, since the water accelerates into the brink.
 Also with the path of the jet's own horizontal velocity U_j = (sum of u^2 + p / rho) / (sum of u) over the brink
 window's water in all the frames: the brink section's x-momentum flux, pressure included, over its mass flux. The
 pressure at the brink is not yet the ambient (the streamlines still curve there), so the water goes on accelerating
@@ -25,8 +28,7 @@ of the sheet) is --pool-y, by default the crest of the region named weir; the sh
 --sheet-bottom, by default the pool level plus 35 % of the drop from the bed (above the splash).
 Writes RUN_DIR/plots/overfall.png (the sheet of the last frame used, the measured and ballistic paths) and
 RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse, ballistic x
-with the brink's momentum flux U_j), and
-prints a summary.
+with the brink's momentum flux U_j, ballistic x from the brink section), and prints a summary.
 Channel energy: in bins of --energy-bin metres from the inflow's gate (the downstream edge of region 'gate', else
 of the first [[inflow]] box) to the brink, the water's depth h (as at the brink: particles above the bed less l0/2,
 times l0^2, over the bin's length), its mean velocity U and the specific energy E = h + U^2 / (2 g) against the
@@ -176,7 +178,7 @@ def run(args):
         raise PlotError(f"--block must be > 0 s, got {args.block}")
     if not args.energy_bin > 0.0:
         raise PlotError(f"--energy-bin must be > 0 m, got {args.energy_bin}")
-    depth, edge_depth, u_mean, v_mean = [], [], [], []
+    depth, edge_depth, u_mean, v_mean, edge_u, edge_v = [], [], [], [], [], []
     mass_flux, momentum_flux = 0.0, 0.0  # sums of u and of u^2 + p / rho over the brink window, all frames
     slab_x = [[] for _ in levels]
     channel_frames = []
@@ -187,7 +189,11 @@ def run(args):
         vel, pressure = a["velocity"][liquid], a["pressure"][liquid]
         at_brink = (x > x_brink - window) & (x <= x_brink) & (y > y_bed - 0.5 * l0)
         depth.append(at_brink.sum() * l0 * l0 / window)
-        edge_depth.append((at_brink & (x > x_brink - l0)).sum() * l0)
+        at_edge = at_brink & (x > x_brink - l0)
+        edge_depth.append(at_edge.sum() * l0)
+        if at_edge.any():
+            edge_u.append(vel[at_edge, 0].mean())
+            edge_v.append(vel[at_edge, 1].mean())
         if at_brink.any():
             u_mean.append(vel[at_brink, 0].mean())
             v_mean.append(vel[at_brink, 1].mean())
@@ -213,9 +219,13 @@ def run(args):
     from_rouse = ballistic_x(y_bed + 0.5 * h_rouse, q / h_rouse, 0.0, levels)
     u_jet = momentum_flux / mass_flux if mass_flux > 0.0 else float("nan")
     from_jet = ballistic_x(y_bed + 0.5 * h_b, u_jet, v_b, levels)
+    h_edge = float(np.mean(edge_depth))
+    u_edge, v_edge = (float(np.mean(edge_u)), float(np.mean(edge_v))) if edge_u else (float("nan"),) * 2
+    from_edge = ballistic_x(y_bed + 0.5 * h_edge, u_edge, v_edge, levels)
     valid = ~np.isnan(measured)
     rms_brink = float(np.sqrt(np.nanmean((measured - from_brink) ** 2))) if valid.any() else float("nan")
     rms_rouse = float(np.sqrt(np.nanmean((measured - from_rouse) ** 2))) if valid.any() else float("nan")
+    rms_edge = float(np.sqrt(np.nanmean((measured - from_edge) ** 2))) if valid.any() else float("nan")
     off_jet = measured - from_jet
     rms_jet, offset_jet, scatter_jet = ((float(np.sqrt(np.nanmean(off_jet ** 2))), float(np.nanmean(off_jet)),
                                          float(np.nanstd(off_jet))) if valid.any() else (float("nan"),) * 3)
@@ -224,9 +234,11 @@ def run(args):
     os.makedirs(out_dir, exist_ok=True)
     csv_path = os.path.join(out_dir, "overfall.csv")
     with open(csv_path + ".tmp", "w") as f:
-        f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse,x_ballistic_brink_momentum\n")
+        f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse,x_ballistic_brink_momentum,"
+                "x_ballistic_brink_section\n")
         for k, level in enumerate(levels):
-            f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f},{from_jet[k]:.5f}\n")
+            f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f},{from_jet[k]:.5f},"
+                    f"{from_edge[k]:.5f}\n")
     os.replace(csv_path + ".tmp", csv_path)
 
     _, a = read_vtp(chosen[-1][1])
@@ -261,6 +273,8 @@ def run(args):
     print(f"brink velocity  measured U = {u_b:.3f} m/s, V = {v_b:.3f} m/s; q/h_b(measured) = {q / h_b:.3f} m/s")
     print(f"nappe           {int(valid.sum())} levels; RMS of x against the ballistic path from the measured brink "
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
+    print(f"brink section   the last l0: U = {u_edge:.3f} m/s, V = {v_edge:.3f} m/s; nappe's x against the ballistic "
+          f"path from its mid-depth: RMS {100 * rms_edge:.2f} cm")
     print(f"jet velocity    the brink's momentum flux (pressure included) over its mass flux U_j = {u_jet:.3f} m/s; "
           f"nappe's x against the ballistic path with U_j: RMS {100 * rms_jet:.2f} cm, mean {100 * offset_jet:+.2f} cm, "
           f"scatter about the mean {100 * scatter_jet:.2f} cm")

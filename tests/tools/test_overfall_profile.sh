@@ -82,6 +82,10 @@ assert abs(edge - 2.0) < 1e-9, edge
 assert abs(u - 0.7) < 1e-9 and abs(v + 0.1) < 1e-9, (u, v)
 assert abs(ratio - 2.0 / 2.967) < 0.002, ratio      # h_c = (0.016^2 / 9.81)^(1/3) = 2.967 cm
 assert rms < 0.2, rms
+# The brink section (the last l0) moves as the channel here, so its path is the same.
+u_edge, v_edge, rms_edge = (float(s) for s in re.search(
+    r"the last l0: U = ([-0-9.]+) m/s, V = ([-0-9.]+) m/s; .* RMS ([0-9.]+) cm", out).groups())
+assert abs(u_edge - 0.7) < 1e-9 and abs(v_edge + 0.1) < 1e-9 and rms_edge < 0.2, (u_edge, v_edge, rms_edge)
 # Against the path with U_j = 0.8 m/s the sheet (median 1 mm past the 0.7 m/s path) lies 1 mm - 0.1 m/s t behind, at
 # the levels from y_bed - l0 down to the pool + 35 % of the drop (0.425 ... 0.225 m).
 u_jet = float(re.search(r"U_j = ([0-9.]+) m/s", out).group(1))
@@ -106,6 +110,39 @@ print("overfall_profile: depth, velocity, nappe and channel energy recovered")
 PY
 test -s "$run/plots/overfall.png"
 test -s "$run/plots/overfall.csv"
+
+# The brink section: the last l0 of the channel moves at (0.8, -0.15) m/s, the l0 before it at (0.7, -0.1), and the
+# sheet leaves the section's mid-depth with the section's velocity. The tool must put the sheet on the section's path
+# (RMS under 2 mm) and 0.5 cm and more off the path with the 2 l0 window's mean velocity (0.75, -0.125).
+section="$work/section"
+mkdir -p "$section" && cp "$run/case.toml" "$section/case.toml"
+"$py" - "$section" "$source_dir" <<'PY'
+import math, os, sys
+sys.path.insert(0, os.path.join(sys.argv[2], "tests", "tools"))
+from hand_made_run import write_frames
+l0, g, x_brink, y_bed = 0.01, 9.81, 0.30, 0.435
+pts, vel = [], []
+for i in range(10):
+    for j in range(2):
+        x = x_brink - 0.095 + i * l0
+        pts.append((x, y_bed + j * l0, 0, 0))
+        vel.append((0.8, -0.15) if x > x_brink - l0 else (0.7, -0.1))
+level = y_bed - l0
+while level > 0.2:
+    t = (-0.15 + math.sqrt(0.15 ** 2 + 2 * g * (y_bed + 0.01 - level))) / g
+    pts.append((x_brink + 0.8 * t, level, 0, 0))
+    vel.append((0.8, -0.15 - g * t))
+    level -= l0
+write_frames(sys.argv[1], [0.5], pts, vel)
+PY
+out=$("$py" "$tool" "$section")
+"$py" - "$out" <<'PY'
+import re, sys
+out = sys.argv[1]
+window = float(re.search(r"from the measured brink ([0-9.]+) cm", out).group(1))
+section = float(re.search(r"the last l0: U = 0.800 m/s, V = -0.150 m/s; .* RMS ([0-9.]+) cm", out).group(1))
+assert section < 0.2 and window > 0.5, (section, window)
+PY
 
 # The standard error of the brink depth from block means: four frames 0.5 s apart, the channel 2, 3, 2 and 3 rows
 # deep at the brink: mean 2.5 cm, block means 2, 3, 2, 3 cm, standard error std(ddof 1) / sqrt(4) = 0.2887 cm =
