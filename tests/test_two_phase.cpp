@@ -19,6 +19,7 @@
 #include "support/exact_solve.hpp"
 #include "support/run_case.hpp"
 #include "support/tank_case.hpp"
+#include "support/coarse_bubble_case.hpp"
 #include "support/same_particles.hpp"
 #include "mps/solver.hpp"
 
@@ -84,58 +85,7 @@ struct BubbleSystem {
   }
 };
 
-// A coarse cases/bubble_rise.toml: l0 = 5 mm (62 gas particles in the bubble, 9 across), compressible gas
-// (c = 340 m/s), mixed source.
-std::string coarseBubbleCase() {
-  return R"(
-[case]
-name = "coarse_bubble"
-dimension = 2
-[domain]
-min = [-0.02, -0.02]
-max = [0.22, 0.25]
-[physics.gas]
-sound_speed = 340.0
-[numerics]
-particle_spacing = 0.005
-dt_max = 5e-4
-pressure_source = "mixed"
-source_relaxation = 0.01
-[output]
-end_time = 0.15
-[[region]]
-name = "air"
-material = "gas"
-min = [0.0, 0.0]
-max = [0.2, 0.2]
-[[region]]
-name = "water"
-material = "water"
-min = [0.0, 0.0]
-max = [0.2, 0.15]
-[[region]]
-name = "bubble"
-material = "gas"
-shape = "circle"
-center = [0.1, 0.0925]
-radius = 0.0225
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.02, -0.02]
-max = [0.22, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.02, 0.0]
-max = [0.0, 0.2]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.2, 0.0]
-max = [0.22, 0.2]
-)";
-}
+std::string coarseBubbleCase() { return test_support::coarseBubbleCase(); }
 
 }  // namespace
 
