@@ -251,7 +251,19 @@ TEST(CaseFileGas, BubbleGasKeys) {
   EXPECT_EQ(c.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::OwnPressure);
   EXPECT_DOUBLE_EQ(c.numerics.bubble_regularisation, 0.0);
   EXPECT_TRUE(c.numerics.gas_pressure_memory);
+  EXPECT_TRUE(c.numerics.gas_pressure_memory_open);
   EXPECT_TRUE(c.numerics.gas_collision_after_correction);
+  p = Parts{};
+  p.numerics += "gas_pressure_memory = \"bubbles\"\n";  // the bubbles' rows only
+  const CaseConfig b = parseCase(p.text(), "t.toml");
+  EXPECT_TRUE(b.numerics.gas_pressure_memory);
+  EXPECT_FALSE(b.numerics.gas_pressure_memory_open);
+  p = Parts{};
+  p.numerics += "gas_pressure_memory = \"open\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"bubbles\"");
+  p = Parts{};
+  p.numerics += "gas_pressure_memory = 1\n";
+  EXPECT_HAS(errorOf(p.text()), "true, false or \"bubbles\"");
   p = Parts{};
   p.numerics += "bubble_gas_motion = \"float\"\n";
   EXPECT_HAS(errorOf(p.text()), "allowed \"follow_liquid\" or \"own_pressure\"");

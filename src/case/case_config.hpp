@@ -181,6 +181,9 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
+  // With gas_pressure_memory: the open gas's rows carry it too (true, the key's `true`) or only the bubbles' rows
+  // (false, the key's "bubbles": the bubbles at the gas's stiffness, the open air as soft as without the key).
+  bool gas_pressure_memory_open = true;
   // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.

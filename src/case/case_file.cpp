@@ -193,7 +193,14 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "gas_region_link", {0.0, 5.0, false, false}, n.gas_region_link);
   rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
-  rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
+  if (const auto f = rd.field(nm, np, "gas_pressure_memory"); f.node && f.node->is_string()) {
+    if (rd.choice(nm, np, "gas_pressure_memory", {"bubbles"}) == 0)
+      n.gas_pressure_memory = true, n.gas_pressure_memory_open = false;
+  } else if (f.node && !f.node->is_boolean()) {
+    rd.wrongType(f, "true, false or \"bubbles\"");
+  } else {
+    rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
+  }
   rd.boolean(nm, np, "gas_collision_after_correction", n.gas_collision_after_correction);
   if (int s = rd.choice(nm, np, "gas_operators", {"paper", "stabilised"}); s >= 0) n.gas_stabilised = s == 1;
   if (int s = rd.choice(nm, np, "vent_outlet", {"buffer", "zero_gradient"}); s >= 0) n.vent_zero_gradient = s == 1;

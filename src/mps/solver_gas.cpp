@@ -89,7 +89,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
   problem_.extra_rhs.clear();
   problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)
-  if (config_.numerics.gas_pressure_memory) {
+  if (config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_open) {
     problem_.extra_rhs.assign(n, 0.0);
     for (std::int64_t i = 0; i < n; ++i)
       if (roles_.open_gas[i] && problem_.unknown[i])
