@@ -86,7 +86,8 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       }
   }
   const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
-  // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step
+  // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step (not with
+  // numerics.gas_pressure_memory = "bubbles", which leaves the open gas's rows soft)
   problem_.extra_rhs.clear();
   problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)
   if (config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_open) {
@@ -279,8 +280,9 @@ void MpsSolver<D>::removeReleasedPoints() {
   released_points_.clear();
 }
 
-// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp), unless numerics.bubble_gas_motion =
-// "own_pressure" (then it keeps its predicted velocity and the gas system corrects it like open gas).
+// The gas of bubbles moves with the liquid around it (bubble_gas_motion.hpp; with numerics.bubble_gas_motion =
+// "follow_void", on average with its void's translation), unless the key is "own_pressure" (then it keeps its
+// predicted velocity and the gas system corrects it like open gas).
 template <int D>
 void MpsSolver<D>::moveBubbleGas(double dt) {
   using Motion = NumericsConfig::BubbleGasMotion;
