@@ -27,6 +27,7 @@
 
 #include <Eigen/Dense>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "mps/neighbor_search.hpp"
@@ -39,20 +40,22 @@ namespace mistfall {
 inline constexpr int kBubbleVelocitySweeps = 4;  // each sweep reaches re further into the bubble
 // The window psi of U_B: 1 to kVoidWindowInner l0 beyond the bubble's farthest gas particle from its centroid, then
 // falling smoothly to 0 over kVoidWindowWidth l0; U_B is trusted where A's smallest eigenvalue is at least
-// kVoidWindowTrust V_B (A = V_B I in the continuum).
+// kVoidWindowTrust V_B (A = V_B I in the continuum; a threshold, not physics).
 inline constexpr double kVoidWindowInner = 0.5, kVoidWindowWidth = 3.0, kVoidWindowTrust = 0.5;
 
 // Sets the velocity of every enclosed gas particle (roles.enclosed_gas) to the extension of its neighbours'
 // velocities and moves it by dt times the change. The neighbour list must reach `re`.
 // The translation U_B of each bubble (region of `region_of`, `regions` of them) from the velocity of everything around
-// it (see above), spacing l0; zero for a region whose A is far from V_B I (too thin to define its centroid's motion:
-// then its gas moves as the extension alone).
+// it (see above), spacing l0; none for a region that is no bubble and for one whose A is far from V_B I (V_B I in the
+// continuum for any shape; the lattice sum departs from it where its window holds few particles), whose gas then
+// moves as the extension alone.
 template <int D>
-std::vector<Vec<D>> voidTranslation(const Particles<D>& p, const CouplingRoles& roles,
+std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const CouplingRoles& roles,
                                     const std::vector<std::int32_t>& region_of, std::size_t regions, double l0) {
   using Mat = Eigen::Matrix<double, D, D>;
   const std::size_t n = p.size();
-  std::vector<Vec<D>> centroid(regions, Vec<D>::Zero()), translation(regions, Vec<D>::Zero());
+  std::vector<Vec<D>> centroid(regions, Vec<D>::Zero());
+  std::vector<std::optional<Vec<D>>> translation(regions);
   std::vector<double> count(regions, 0.0), reach(regions, 0.0);
   auto inBubble = [&](std::size_t i) { return roles.enclosed_gas[i] && region_of[i] >= 0; };
   for (std::size_t i = 0; i < n; ++i)
@@ -92,7 +95,7 @@ std::vector<Vec<D>> voidTranslation(const Particles<D>& p, const CouplingRoles& 
 
 template <int D>
 void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
-                               double dt, const std::vector<Vec<D>>* translation = nullptr,
+                               double dt, const std::vector<std::optional<Vec<D>>>* translation = nullptr,
                                const std::vector<std::int32_t>* region_of = nullptr) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> before(p.velocity.begin(), p.velocity.end()), next(n);
@@ -117,16 +120,16 @@ void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const Co
       if (roles.enclosed_gas[i]) p.velocity[i] = next[i];
   }
   // With a translation per bubble: the extension keeps its deformation (its departure from its mean over the
-  // bubble), and the bubble's gas moves on average with the void, U_B.
+  // bubble), and the bubble's gas moves on average with the void, U_B (where it has one).
   if (translation) {
     std::vector<Vec<D>> mean(translation->size(), Vec<D>::Zero());
     std::vector<double> count(translation->size(), 0.0);
     for (std::int64_t i = 0; i < n; ++i)
       if (roles.enclosed_gas[i] && (*region_of)[i] >= 0) mean[(*region_of)[i]] += p.velocity[i], count[(*region_of)[i]] += 1;
     for (std::int64_t i = 0; i < n; ++i)
-      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0) {
+      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0 && (*translation)[(*region_of)[i]]) {
         const auto b = (*region_of)[i];
-        p.velocity[i] += (*translation)[b] - mean[b] / count[b];
+        p.velocity[i] += *(*translation)[b] - mean[b] / count[b];
       }
   }
 #pragma omp parallel for schedule(static)
