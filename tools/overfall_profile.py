@@ -223,12 +223,15 @@ def run(args):
     u_edge, v_edge = (float(np.mean(edge_u)), float(np.mean(edge_v))) if edge_u else (float("nan"),) * 2
     from_edge = ballistic_x(y_bed + 0.5 * h_edge, u_edge, v_edge, levels)
     valid = ~np.isnan(measured)
-    rms_brink = float(np.sqrt(np.nanmean((measured - from_brink) ** 2))) if valid.any() else float("nan")
-    rms_rouse = float(np.sqrt(np.nanmean((measured - from_rouse) ** 2))) if valid.any() else float("nan")
-    rms_edge = float(np.sqrt(np.nanmean((measured - from_edge) ** 2))) if valid.any() else float("nan")
-    off_jet = measured - from_jet
-    rms_jet, offset_jet, scatter_jet = ((float(np.sqrt(np.nanmean(off_jet ** 2))), float(np.nanmean(off_jet)),
-                                         float(np.nanstd(off_jet))) if valid.any() else (float("nan"),) * 3)
+
+    def offsets(path):  # the nappe's x against a path: RMS, mean and scatter about the mean over the valid levels
+        if not valid.any():
+            return (float("nan"),) * 3
+        off = measured - path
+        return float(np.sqrt(np.nanmean(off ** 2))), float(np.nanmean(off)), float(np.nanstd(off))
+
+    rms_brink, rms_rouse, rms_edge = (offsets(path)[0] for path in (from_brink, from_rouse, from_edge))
+    rms_jet, offset_jet, scatter_jet = offsets(from_jet)
 
     out_dir = os.path.join(args.run_dir, "plots")
     os.makedirs(out_dir, exist_ok=True)

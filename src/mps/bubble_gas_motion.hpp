@@ -10,8 +10,8 @@
 // bubble and moves on average with the bubble's translation U_B: a harmonic extension carries no net motion of a
 // void that rises (the potential flow round a cylinder rising at U has the interface velocity U (sin 2t, -cos 2t),
 // whose harmonic extension is zero at the centre and zero on average), so without U_B the gas stays behind a bubble
-// that moves and only a soft gas lets the void move on. U_B is the velocity of the void's centroid X (Reynolds' transport theorem
-// on the bubble: d/dt int_B x dV = oint x (u.n) dS):
+// that moves and only a soft gas lets the void move on. U_B is the velocity of the void's centroid X (Reynolds'
+// transport theorem on the bubble: d/dt int_B x dV = oint x (u.n) dS):
 //   V_B U_B = oint_B (x - X)(u.n) dS.
 // The liquid's velocity at the interface is known only at particles a spacing or two away, where a rising bubble's
 // dipole flow has decayed by (a/r)^2, so the surface integral is turned into one over the fluid around the bubble:
@@ -43,15 +43,14 @@ inline constexpr int kBubbleVelocitySweeps = 4;  // each sweep reaches re furthe
 // kVoidWindowTrust V_B (A = V_B I in the continuum; a threshold, not physics).
 inline constexpr double kVoidWindowInner = 0.5, kVoidWindowWidth = 3.0, kVoidWindowTrust = 0.5;
 
-// Sets the velocity of every enclosed gas particle (roles.enclosed_gas) to the extension of its neighbours'
-// velocities and moves it by dt times the change. The neighbour list must reach `re`.
 // The translation U_B of each bubble (region of `region_of`, `regions` of them) from the velocity of everything around
 // it (see above), spacing l0; none for a region that is no bubble and for one whose A is far from V_B I (V_B I in the
 // continuum for any shape; the lattice sum departs from it where its window holds few particles), whose gas then
 // moves as the extension alone.
 template <int D>
 std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const CouplingRoles& roles,
-                                    const std::vector<std::int32_t>& region_of, std::size_t regions, double l0) {
+                                                   const std::vector<std::int32_t>& region_of, std::size_t regions,
+                                                   double l0) {
   using Mat = Eigen::Matrix<double, D, D>;
   const std::size_t n = p.size();
   std::vector<Vec<D>> centroid(regions, Vec<D>::Zero());
@@ -63,7 +62,10 @@ std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const 
   for (std::size_t b = 0; b < regions; ++b)
     if (count[b] > 0) centroid[b] /= count[b];
   for (std::size_t i = 0; i < n; ++i)
-    if (inBubble(i)) reach[region_of[i]] = std::max(reach[region_of[i]], (p.position[i] - centroid[region_of[i]]).norm());
+    if (inBubble(i)) {
+      const auto b = region_of[i];
+      reach[b] = std::max(reach[b], (p.position[i] - centroid[b]).norm());
+    }
   const double cell = std::pow(l0, D);
 #pragma omp parallel for schedule(dynamic)
   for (std::int64_t b = 0; b < static_cast<std::int64_t>(regions); ++b) {
@@ -88,11 +90,16 @@ std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const 
     }
     const double volume = count[b] * cell;
     Eigen::SelfAdjointEigenSolver<Mat> eigen(0.5 * (a + a.transpose()));
-    if (eigen.eigenvalues().minCoeff() > kVoidWindowTrust * volume) translation[b] = a.colPivHouseholderQr().solve(m);
+    if (eigen.eigenvalues().minCoeff() > kVoidWindowTrust * volume)
+      translation[b] = Vec<D>(a.colPivHouseholderQr().solve(m));
   }
   return translation;
 }
 
+// Sets the velocity of every enclosed gas particle (roles.enclosed_gas) to the extension of its neighbours'
+// velocities and moves it by dt times the change. The neighbour list must reach `re`. With `translation`
+// (voidTranslation, indexed by `region_of`), the gas of each bubble that has one keeps the extension's departure from
+// its mean and moves on average with it.
 template <int D>
 void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
                                double dt, const std::vector<std::optional<Vec<D>>>* translation = nullptr,
@@ -124,11 +131,12 @@ void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const Co
   if (translation) {
     std::vector<Vec<D>> mean(translation->size(), Vec<D>::Zero());
     std::vector<double> count(translation->size(), 0.0);
+    const auto& bubble_of = *region_of;
     for (std::int64_t i = 0; i < n; ++i)
-      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0) mean[(*region_of)[i]] += p.velocity[i], count[(*region_of)[i]] += 1;
+      if (roles.enclosed_gas[i] && bubble_of[i] >= 0) mean[bubble_of[i]] += p.velocity[i], count[bubble_of[i]] += 1;
     for (std::int64_t i = 0; i < n; ++i)
-      if (roles.enclosed_gas[i] && (*region_of)[i] >= 0 && (*translation)[(*region_of)[i]]) {
-        const auto b = (*region_of)[i];
+      if (roles.enclosed_gas[i] && bubble_of[i] >= 0 && (*translation)[bubble_of[i]]) {
+        const auto b = bubble_of[i];
         p.velocity[i] += *(*translation)[b] - mean[b] / count[b];
       }
   }
