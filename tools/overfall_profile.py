@@ -15,6 +15,9 @@ velocity (U, V): x = x_b + U t, y = y0 + V t - g t^2 / 2, and with the path from
 Also with the path from the brink section itself, the last l0 before the edge (the window of the headline depth "over
 the last l0"): y0 = bed + h_edge/2 and that water's mean velocity; the 2 l0 window's mean velocity lies below the
 edge's, since the water accelerates into the brink.
+Also the sheet as the first water met going downstream from the cavity: at each level of each frame the median x of
+the water before the first gap wider than 2 l0, then the median over the frames. Where the plunge zone swells or
+throws spray up to the sheet's lowest levels, the median of all the water there lies in that water, not in the sheet.
 Also with the path of the jet's own horizontal velocity U_j = (sum of u^2 + p / rho) / (sum of u) over the brink
 window's water in all the frames: the brink section's x-momentum flux, pressure included, over its mass flux. The
 pressure at the brink is not yet the ambient (the streamlines still curve there), so the water goes on accelerating
@@ -28,7 +31,8 @@ of the sheet) is --pool-y, by default the crest of the region named weir; the sh
 --sheet-bottom, by default the pool level plus 35 % of the drop from the bed (above the splash).
 Writes RUN_DIR/plots/overfall.png (the sheet of the last frame used, the measured and ballistic paths) and
 RUN_DIR/plots/overfall.csv (y, measured x, ballistic x from the measured brink, ballistic x from Rouse, ballistic x
-with the brink's momentum flux U_j, ballistic x from the brink section), and prints a summary.
+with the brink's momentum flux U_j, ballistic x from the brink section, the sheet's x from the cavity), and prints a
+summary.
 Channel energy: in bins of --energy-bin metres from the inflow's gate (the downstream edge of region 'gate', else
 of the first [[inflow]] box) to the brink, the water's depth h (as at the brink: particles above the bed less l0/2,
 times l0^2, over the bin's length), its mean velocity U and the specific energy E = h + U^2 / (2 g) against the
@@ -165,6 +169,14 @@ def main():
         sys.exit(1)
 
 
+def sheet_from_cavity(xs, l0):
+    """The median x of the first run of water met going downstream from the cavity at one level of one frame: the
+    water beyond the first gap wider than 2 l0 is splash or the plunge zone's mound, not the sheet."""
+    xs = np.sort(xs)
+    gaps = np.nonzero(np.diff(xs) > 2.0 * l0)[0]
+    return float(np.median(xs[: gaps[0] + 1] if gaps.size else xs))
+
+
 def run(args):
     l0, g, q, x_brink, y_bed, pool_y, channel_start, rho = read_overfall_case(args.run_dir, args.bed_region,
                                                                               args.pool_y)
@@ -181,6 +193,7 @@ def run(args):
     depth, edge_depth, u_mean, v_mean, edge_u, edge_v = [], [], [], [], [], []
     mass_flux, momentum_flux = 0.0, 0.0  # sums of u and of u^2 + p / rho over the brink window, all frames
     slab_x = [[] for _ in levels]
+    first_x = [[] for _ in levels]  # per frame: the median x of the first water met from the cavity (sheet_from_cavity)
     channel_frames = []
     for _, path in chosen:
         _, a = read_vtp(path)
@@ -202,7 +215,10 @@ def run(args):
         channel_frames.append((x, y, vel[:, 0]))
         sheet = x > x_brink
         for k, level in enumerate(levels):
-            slab_x[k].extend(x[sheet & (np.abs(y - level) < 0.5 * l0)])
+            at_level = x[sheet & (np.abs(y - level) < 0.5 * l0)]
+            slab_x[k].extend(at_level)
+            if at_level.size:
+                first_x[k].append(sheet_from_cavity(at_level, l0))
     if not u_mean:
         raise PlotError("no water at the brink in the frames chosen")
     h_b, u_b, v_b = float(np.mean(depth)), float(np.mean(u_mean)), float(np.mean(v_mean))
@@ -215,6 +231,7 @@ def run(args):
         return x_brink + u * t
 
     measured = np.array([np.median(xs) if xs else np.nan for xs in slab_x])
+    first = np.array([np.median(xs) if xs else np.nan for xs in first_x])
     from_brink = ballistic_x(y_bed + 0.5 * h_b, u_b, v_b, levels)
     from_rouse = ballistic_x(y_bed + 0.5 * h_rouse, q / h_rouse, 0.0, levels)
     u_jet = momentum_flux / mass_flux if mass_flux > 0.0 else float("nan")
@@ -224,24 +241,25 @@ def run(args):
     from_edge = ballistic_x(y_bed + 0.5 * h_edge, u_edge, v_edge, levels)
     valid = ~np.isnan(measured)
 
-    def offsets(path):  # the nappe's x against a path: RMS, mean and scatter about the mean over the valid levels
+    def offsets(path, sheet_x=measured):  # the nappe's x against a path: RMS, mean and scatter over the valid levels
         if not valid.any():
             return (float("nan"),) * 3
-        off = measured - path
+        off = sheet_x - path
         return float(np.sqrt(np.nanmean(off ** 2))), float(np.nanmean(off)), float(np.nanstd(off))
 
     rms_brink, rms_rouse, rms_edge = (offsets(path)[0] for path in (from_brink, from_rouse, from_edge))
     rms_jet, offset_jet, scatter_jet = offsets(from_jet)
+    rms_first_edge, rms_first_brink = (offsets(path, first)[0] for path in (from_edge, from_brink))
 
     out_dir = os.path.join(args.run_dir, "plots")
     os.makedirs(out_dir, exist_ok=True)
     csv_path = os.path.join(out_dir, "overfall.csv")
     with open(csv_path + ".tmp", "w") as f:
         f.write("y,x_measured,x_ballistic_measured_brink,x_ballistic_rouse,x_ballistic_brink_momentum,"
-                "x_ballistic_brink_section\n")
+                "x_ballistic_brink_section,x_sheet_from_cavity\n")
         for k, level in enumerate(levels):
             f.write(f"{level:.5f},{measured[k]:.5f},{from_brink[k]:.5f},{from_rouse[k]:.5f},{from_jet[k]:.5f},"
-                    f"{from_edge[k]:.5f}\n")
+                    f"{from_edge[k]:.5f},{first[k]:.5f}\n")
     os.replace(csv_path + ".tmp", csv_path)
 
     _, a = read_vtp(chosen[-1][1])
@@ -278,6 +296,9 @@ def run(args):
           f"{100 * rms_brink:.2f} cm, from Rouse's brink {100 * rms_rouse:.2f} cm")
     print(f"brink section   the last l0: U = {u_edge:.3f} m/s, V = {v_edge:.3f} m/s; nappe's x against the ballistic "
           f"path from its mid-depth: RMS {100 * rms_edge:.2f} cm")
+    print(f"sheet from cavity the first water met from the cavity at each level (splash beyond it left out): RMS "
+          f"{100 * rms_first_edge:.2f} cm from the brink section's path, {100 * rms_first_brink:.2f} cm from the "
+          f"measured brink's")
     print(f"jet velocity    the brink's momentum flux (pressure included) over its mass flux U_j = {u_jet:.3f} m/s; "
           f"nappe's x against the ballistic path with U_j: RMS {100 * rms_jet:.2f} cm, mean {100 * offset_jet:+.2f} cm, "
           f"scatter about the mean {100 * scatter_jet:.2f} cm")

@@ -6,7 +6,8 @@
 # ballistic path of a point leaving the brink's mid-depth with that velocity (three per level and one stray drop
 # far off, which the median must ignore), and a pool. The tool must find the 2 cm depth, the velocity, and the
 # sheet on that path (RMS under 2 mm), the jet's velocity from the brink's momentum flux with the channel's water at
-# 70 Pa, and the channel's specific energy; bad input exits 1 with a message.
+# 70 Pa, and the channel's specific energy; the sheet through splash beyond it (the first water from the cavity);
+# bad input exits 1 with a message.
 # Usage: test_overfall_profile.sh SOURCE_DIR
 set -euo pipefail
 source_dir=$1
@@ -143,6 +144,40 @@ window = float(re.search(r"from the measured brink ([0-9.]+) cm", out).group(1))
 section = float(re.search(r"the last l0: U = 0.800 m/s, V = -0.150 m/s; .* RMS ([0-9.]+) cm", out).group(1))
 assert section < 0.2 and window > 0.5, (section, window)
 PY
+
+# Splash beyond the sheet: the brink section's sheet again, and at the five lowest levels eight drops 8-15 cm
+# downstream of it (the plunge zone's mound and spray). The median of all water at those levels lies in the splash;
+# the first water met from the cavity is the sheet's, on its path (RMS under 2 mm), where the median is 2 cm and more off.
+splash="$work/splash"
+mkdir -p "$splash" && cp "$run/case.toml" "$splash/case.toml"
+"$py" - "$splash" "$source_dir" <<'PY'
+import math, os, sys
+sys.path.insert(0, os.path.join(sys.argv[2], "tests", "tools"))
+from hand_made_run import write_frames
+l0, g, x_brink, y_bed = 0.01, 9.81, 0.30, 0.435
+pts = [(x_brink - 0.095 + i * l0, y_bed + j * l0, 0, 0) for i in range(10) for j in range(2)]
+levels = []
+level = y_bed - l0
+while level > 0.2:
+    levels.append(level)
+    level -= l0
+for k, level in enumerate(levels):
+    t = (-0.1 + math.sqrt(0.01 + 2 * g * (y_bed + 0.01 - level))) / g
+    x = x_brink + 0.7 * t
+    pts += [(x - 0.002, level, 0, 0), (x + 0.002, level, 0, 0)]
+    if k >= len(levels) - 5:
+        pts += [(x + 0.08 + 0.01 * i, level, 0, 0) for i in range(8)]
+write_frames(sys.argv[1], [0.5], pts, [(0.7, -0.1)] * len(pts))
+PY
+out=$("$py" "$tool" "$splash")
+"$py" - "$out" <<'PY'
+import re, sys
+out = sys.argv[1]
+median = float(re.search(r"the last l0: U = 0.700 m/s, V = -0.100 m/s; .* RMS ([0-9.]+) cm", out).group(1))
+first = float(re.search(r"sheet from cavity .* RMS ([0-9.]+) cm from the brink section's path", out).group(1))
+assert first < 0.2 and median > 2.0, (first, median)
+PY
+grep -q "x_sheet_from_cavity" "$splash/plots/overfall.csv"
 
 # The standard error of the brink depth from block means: four frames 0.5 s apart, the channel 2, 3, 2 and 3 rows
 # deep at the brink: mean 2.5 cm, block means 2, 3, 2, 3 cm, standard error std(ddof 1) / sqrt(4) = 0.2887 cm =
