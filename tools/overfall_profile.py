@@ -267,6 +267,7 @@ def run(args):
     fig, ax = plt.subplots(figsize=(6, 6))
     ax.scatter(a["Points"][liquid, 0], a["Points"][liquid, 1], s=6, c="lightsteelblue", label="water (last frame)")
     ax.plot(measured, levels, "o-", c="navy", ms=3, label="sheet, median x (measured)")
+    ax.plot(first, levels, "s", c="purple", ms=3, mfc="none", label="sheet, first water from the cavity")
     ax.plot(from_brink, levels, "--", c="crimson", label=f"ballistic, measured brink (U={u_b:.2f}, V={v_b:.2f} m/s)")
     ax.plot(from_rouse, levels, ":", c="darkgreen", label=f"ballistic, Rouse brink (U={q / h_rouse:.2f} m/s)")
     ax.plot(from_jet, levels, "-.", c="darkorange", label=f"ballistic, brink momentum (U_j={u_jet:.2f} m/s)")
