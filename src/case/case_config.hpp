@@ -130,6 +130,10 @@ struct NumericsConfig {
   // [l0] a guard: a particle shift longer than this is shortened to it (counted: shift_cuts in diagnostics.csv);
   // 0 = none. The shift's first moment grows as 1/r^2 for a close pair (docs/two-phase.md).
   double shift_limit = 0.0;
+  // a guard: a position-only displacement (the liquid's shift, the gas system's re-spacing of a bubble's gas) does not
+  // approach a wall or dummy particle it would bring within collision_distance (wall_stop.hpp; counted:
+  // shift_wall_stops and respacing_wall_stops in diagnostics.csv)
+  bool shift_wall_stop = false;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

@@ -225,6 +225,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.points_unpaired = std::exchange(guards.points_unpaired, 0);
     row.gap_water_floors = std::exchange(guards.gap_water_floors, 0);
     row.vent_crowded_out = std::exchange(guards.vent_crowded_out, 0);
+    row.shift_wall_stops = std::exchange(guards.shift_wall_stops, 0);
+    row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -275,6 +277,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.points_unpaired += static_cast<std::int64_t>(last.bubble_points_unpaired);
         guards.gap_water_floors += static_cast<std::int64_t>(last.gap_water_floors);
         guards.vent_crowded_out += static_cast<std::int64_t>(last.vent_crowded_out);
+        guards.shift_wall_stops += static_cast<std::int64_t>(last.shift_wall_stops);
+        guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);

@@ -108,6 +108,8 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::points_unpaired>("points_unpaired"),
     column<&DiagnosticsRow::gap_water_floors>("gap_water_floors"),
     column<&DiagnosticsRow::vent_crowded_out>("vent_crowded_out"),
+    column<&DiagnosticsRow::shift_wall_stops>("shift_wall_stops"),
+    column<&DiagnosticsRow::respacing_wall_stops>("respacing_wall_stops"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

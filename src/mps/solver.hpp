@@ -89,6 +89,8 @@ struct StepReport {
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
+  std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
+  std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by the same key
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)
   std::size_t gap_water_floors = 0;    // water pressures raised to the air's by numerics.gap_water_floor
 };

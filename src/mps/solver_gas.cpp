@@ -13,6 +13,7 @@
 #include "mps/pair_loop.hpp"
 #include "mps/particle_shifting.hpp"
 #include "mps/wall_mirror.hpp"
+#include "mps/wall_stop.hpp"
 #include "mps/solver.hpp"
 
 namespace mistfall {
@@ -205,12 +206,25 @@ void MpsSolver<D>::correctGas(double dt) {
   report_.gas_correction_cuts = correction_cuts;
   report_.gas_speed_cuts = speed_cuts;
   const bool own_pressure = config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure;
-#pragma omp parallel for schedule(static)
+  // numerics.shift_wall_stop (a guard, counted): a bubble gas's re-spacing, a move without a velocity that the
+  // collision model cannot see, does not approach a wall particle it would bring within collision_distance
+  // (wall_stop.hpp; only fixed particles are read, so the loop may move the gas as it goes).
+  const bool wall_stop = config_.numerics.shift_wall_stop;
+  const double stop_distance = config_.numerics.collision_distance * constants_.l0;
+  auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
+  std::size_t stops = 0;
+#pragma omp parallel for schedule(static) reduction(+ : stops)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
-    if (!roles_.enclosed_gas[i] || own_pressure) p.velocity[i] += change[i];
-    p.position[i] += dt * change[i];
+    const bool respacing = roles_.enclosed_gas[i] && !own_pressure;
+    if (!respacing) p.velocity[i] += change[i];
+    Vec<D> move = dt * change[i];
+    if (respacing && wall_stop)
+      stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
+                                          fixed, move);
+    p.position[i] += move;
   }
+  report_.respacing_wall_stops = stops;
   // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
   // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced), but a vent's gas, which its
   // column moves (gas_vent.hpp).

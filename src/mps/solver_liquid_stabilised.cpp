@@ -16,6 +16,7 @@
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
+#include "mps/wall_stop.hpp"
 
 namespace mistfall {
 
@@ -157,17 +158,26 @@ void MpsSolver<D>::shiftParticles(double dt) {
   }
   // numerics.shift_limit (a guard, counted): a shift longer than limit l0 is shortened to it.
   const double limit = config_.numerics.shift_limit * constants_.l0;
+  // numerics.shift_wall_stop (a guard, counted): the shift does not approach a wall particle it would bring within
+  // collision_distance (wall_stop.hpp; only fixed particles are read, so the loop may move the fluid as it goes).
+  const bool wall_stop = config_.numerics.shift_wall_stop;
+  const double stop_distance = config_.numerics.collision_distance * constants_.l0;
+  auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
   double largest = 0.0;
-  std::size_t cuts = 0;
-#pragma omp parallel for schedule(static) reduction(max : largest) reduction(+ : cuts)
+  std::size_t cuts = 0, stops = 0;
+#pragma omp parallel for schedule(static) reduction(max : largest) reduction(+ : cuts, stops)
   for (std::int64_t i = 0; i < n; ++i) {
     const double length = shift[i].norm();
     largest = std::max(largest, length);
     if (limit > 0.0 && length > limit) shift[i] *= limit / length, ++cuts;
+    if (wall_stop && length > 0.0)
+      stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, neighbours_, stop_distance, fixed,
+                                          shift[i]);
     p.position[i] += shift[i];
   }
   report_.largest_shift = largest / constants_.l0;
   report_.shift_cuts = cuts;
+  report_.shift_wall_stops = stops;
 }
 
 #define MISTFALL_INSTANTIATE(D)                                                         \
