@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mps/bubble_gas_motion.hpp"
@@ -162,3 +163,34 @@ TEST(BubbleGasMotion, ABubbleWithNothingAroundItKeepsTheExtensionsMotion) {
 }
 
 }  // namespace
+
+namespace {
+
+// The released bubble (stiff gas, the extension alone: the gas system re-spaces the bubble's gas in position only)
+// over 10 ms with numerics.respacing_limit; the re-spacings cut, and the bubble's centroid height at the end.
+std::pair<std::size_t, double> releasedBubbleWithRespacingLimit(const std::string& limit) {
+  test_support::SolverRun<2> run(
+      test_support::coarseBubbleCase("scheme = \"stabilised\"\ncollision_distance = 0.8\ngas_pressure_memory = true\n"
+                                     "respacing_limit = " + limit + "\n",
+                                     "0.01"),
+      "respacing_limit.toml");
+  std::size_t cuts = 0;
+  while (run.state.time < 0.01 - 1e-12) cuts += run.solver->step(0.01).respacing_cuts;
+  const auto bubbles = run.solver->currentBubbles();
+  return {cuts, bubbles.size() == 1 ? bubbles[0].centroid[1] : -1.0};
+}
+
+}  // namespace
+
+// numerics.respacing_limit (a guard): re-spacings longer than the limit are cut and counted; a limit above the longest
+// cuts nothing, and the trajectory is the unlimited one.
+TEST(BubbleGasMotion, TheRespacingLimitCutsTheRespacingsAboveItAndCountsThem) {
+  const auto [free_cuts, free_height] = releasedBubbleWithRespacingLimit("0");
+  const auto [loose_cuts, loose_height] = releasedBubbleWithRespacingLimit("10");
+  const auto [tight_cuts, tight_height] = releasedBubbleWithRespacingLimit("0.001");
+  EXPECT_EQ(0u, free_cuts);
+  EXPECT_EQ(0u, loose_cuts);
+  EXPECT_DOUBLE_EQ(free_height, loose_height);
+  EXPECT_GT(tight_cuts, 0u);
+  EXPECT_GT(tight_height, 0.0);  // still one bubble
+}

@@ -134,6 +134,9 @@ struct NumericsConfig {
   // approach a wall or dummy particle it would bring within collision_distance (wall_stop.hpp; counted:
   // shift_wall_stops and respacing_wall_stops in diagnostics.csv)
   bool shift_wall_stop = false;
+  // [l0] a guard: the gas system's re-spacing of a bubble's gas (a move without a velocity) is shortened to at most
+  // this in a step (counted: respacing_cuts in diagnostics.csv); 0 = none
+  double respacing_limit = 0.0;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

@@ -227,6 +227,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.vent_crowded_out = std::exchange(guards.vent_crowded_out, 0);
     row.shift_wall_stops = std::exchange(guards.shift_wall_stops, 0);
     row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
+    row.respacing_cuts = std::exchange(guards.respacing_cuts, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -279,6 +280,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.vent_crowded_out += static_cast<std::int64_t>(last.vent_crowded_out);
         guards.shift_wall_stops += static_cast<std::int64_t>(last.shift_wall_stops);
         guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
+        guards.respacing_cuts += static_cast<std::int64_t>(last.respacing_cuts);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);

@@ -110,6 +110,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::vent_crowded_out>("vent_crowded_out"),
     column<&DiagnosticsRow::shift_wall_stops>("shift_wall_stops"),
     column<&DiagnosticsRow::respacing_wall_stops>("respacing_wall_stops"),
+    column<&DiagnosticsRow::respacing_cuts>("respacing_cuts"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -73,6 +73,9 @@ struct DiagnosticsRow {
   // Position-only displacements stopped at a wall by numerics.shift_wall_stop since the previous row (particle-steps;
   // a guard, mps/wall_stop.hpp): the liquid's shifts, and the gas system's re-spacings of a bubble's gas.
   std::int64_t shift_wall_stops = 0, respacing_wall_stops = 0;
+  // The gas system's re-spacings of a bubble's gas shortened to numerics.respacing_limit since the previous row
+  // (particle-steps; a guard).
+  std::int64_t respacing_cuts = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -91,6 +91,7 @@ struct StepReport {
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
   std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by the same key
+  std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)
   std::size_t gap_water_floors = 0;    // water pressures raised to the air's by numerics.gap_water_floor
 };

@@ -209,22 +209,30 @@ void MpsSolver<D>::correctGas(double dt) {
   // numerics.shift_wall_stop (a guard, counted): a bubble gas's re-spacing, a move without a velocity that the
   // collision model cannot see, does not approach a wall particle it would bring within collision_distance
   // (wall_stop.hpp; only fixed particles are read, so the loop may move the gas as it goes).
+  // numerics.respacing_limit (a guard, counted): a re-spacing longer than limit l0 is shortened to it. A re-spacing
+  // changes no velocity, so the time step does not see it: traced on waterfall_small with the stiff bubbles, a bubble's
+  // gas particle was re-spaced 4.3 l0 in one step to 0.12 l0 from another, and the next step's rows moved it 16 cm
+  // through the floor (docs/waterfall.md).
   const bool wall_stop = config_.numerics.shift_wall_stop;
   const double stop_distance = config_.numerics.collision_distance * constants_.l0;
+  const double respacing_limit = config_.numerics.respacing_limit * constants_.l0;
   auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
-  std::size_t stops = 0;
-#pragma omp parallel for schedule(static) reduction(+ : stops)
+  std::size_t stops = 0, respacing_cuts = 0;
+#pragma omp parallel for schedule(static) reduction(+ : stops, respacing_cuts)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
     const bool respacing = roles_.enclosed_gas[i] && !own_pressure;
     if (!respacing) p.velocity[i] += change[i];
     Vec<D> move = dt * change[i];
+    if (respacing && respacing_limit > 0.0 && move.norm() > respacing_limit)
+      move *= respacing_limit / move.norm(), ++respacing_cuts;
     if (respacing && wall_stop)
       stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
                                           fixed, move);
     p.position[i] += move;
   }
   report_.respacing_wall_stops = stops;
+  report_.respacing_cuts = respacing_cuts;
   // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
   // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced), but a vent's gas, which its
   // column moves (gas_vent.hpp).
