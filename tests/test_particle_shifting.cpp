@@ -94,12 +94,12 @@ TEST(ParticleShifting, AWaterParticleOnAnEvenInterfaceIsNotShiftedIntoTheAirWhat
 
 namespace {
 
-// Water moving at 5 m/s over a floor (stabilised scheme, l0 = 1 cm), one particle put 0.5 l0 from its neighbour:
-// a close pair in a fast flow. Returns the step's report and how far that particle moved. With `at_floor`, the pair
-// is at the floor instead: one particle more put 0.25 l0 above one of the lowest row, whose correction and shift then
-// point at the floor; the distance returned is that lowest particle's from its nearest wall particle.
-std::pair<StepReport, double> stepWithAClosePair(double shift_limit, bool at_floor = false, bool wall_stop = false) {
-  const std::string text = R"(
+// Water moving at 5 m/s over a floor (stabilised scheme, l0 = 1 cm): the case, and the particle at `at` in it.
+struct FastWater {
+  CaseConfig config;
+  SimulationState<2> state;
+  FastWater(double shift_limit, bool wall_stop) {
+    const std::string text = R"(
 [case]
 name = "close_pair"
 dimension = 2
@@ -128,37 +128,47 @@ material = "wall"
 min = [-0.04, -0.04]
 max = [0.24, 0.0]
 )";
-  const CaseConfig config = parseCase(text, "close_pair.toml");
-  SimulationState<2> state;
-  state.particles = buildParticles<2>(config);
-  auto& p = state.particles;
-  std::size_t moved = p.size(), anchor = p.size();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if ((p.position[i] - Vec<2>(0.105, 0.045)).norm() < 1e-9) anchor = i;
-    if ((p.position[i] - Vec<2>(0.115, 0.045)).norm() < 1e-9) moved = i;
+    config = parseCase(text, "close_pair.toml");
+    state.particles = buildParticles<2>(config);
   }
-  if (at_floor) {
-    std::size_t lowest = p.size();
+  std::size_t at(const Vec<2>& x) const {
+    const auto& p = state.particles;
     for (std::size_t i = 0; i < p.size(); ++i)
-      if ((p.position[i] - Vec<2>(0.105, 0.005)).norm() < 1e-9) lowest = i;
-    // One particle more (no hole left above: a hole reads as a free surface, whose normal takes the vertical shift).
-    p.add(p.position[lowest] + Vec<2>(0.0, 0.0025), p.velocity[lowest], ParticleKind::Fluid, Phase::Liquid);
-    const std::uint64_t id = p.id[lowest];
-    MpsSolver<2> solver(config, state);
-    const StepReport report = solver.step(1.0);
-    const auto& q = state.particles;
-    std::size_t i = 0;
-    while (q.id[i] != id) ++i;
-    double nearest = 1.0;
-    for (std::size_t j = 0; j < q.size(); ++j)
-      if (isFixed(q.kind[j])) nearest = std::min(nearest, (q.position[j] - q.position[i]).norm());
-    return {report, nearest};
+      if ((p.position[i] - x).norm() < 1e-9) return i;
+    return p.size();
   }
+};
+
+// One particle put 0.5 l0 from its neighbour: a close pair in a fast flow. Returns the step's report and how far that
+// particle moved.
+std::pair<StepReport, double> stepWithAClosePair(double shift_limit) {
+  FastWater water(shift_limit, false);
+  auto& p = water.state.particles;
+  const std::size_t anchor = water.at(Vec<2>(0.105, 0.045)), moved = water.at(Vec<2>(0.115, 0.045));
   p.position[moved] = p.position[anchor] + Vec<2>(0.005, 0.0);
   const Vec<2> before = p.position[moved];
-  MpsSolver<2> solver(config, state);
+  MpsSolver<2> solver(water.config, water.state);
   const StepReport report = solver.step(1.0);
-  return {report, (state.particles.position[moved] - before).norm()};
+  return {report, (p.position[moved] - before).norm()};
+}
+
+// The pair at the floor: one particle more put 0.25 l0 above one of the lowest row (no hole left above it: a hole
+// reads as a free surface, whose normal takes the vertical shift), whose correction and shift then point at the floor.
+// Returns the step's report and that lowest particle's distance from its nearest wall particle.
+std::pair<StepReport, double> stepWithAPairAtTheFloor(bool wall_stop) {
+  FastWater water(1.0, wall_stop);
+  auto& p = water.state.particles;
+  const std::size_t lowest = water.at(Vec<2>(0.105, 0.005));
+  p.add(p.position[lowest] + Vec<2>(0.0, 0.0025), p.velocity[lowest], ParticleKind::Fluid, Phase::Liquid);
+  const std::uint64_t id = p.id[lowest];
+  MpsSolver<2> solver(water.config, water.state);
+  const StepReport report = solver.step(1.0);
+  std::size_t i = 0;
+  while (p.id[i] != id) ++i;
+  double nearest = 1.0;
+  for (std::size_t j = 0; j < p.size(); ++j)
+    if (isFixed(p.kind[j])) nearest = std::min(nearest, (p.position[j] - p.position[i]).norm());
+  return {report, nearest};
 }
 
 }  // namespace
@@ -182,8 +192,8 @@ TEST(ParticleShifting, TheShiftLimitCutsTheShiftsAboveItAndCountsThem) {
 // of at most a spacing (the shipped waterfall_small), it ends inside the floor's first row, 0.27 l0 from a wall
 // particle; with it, no nearer than the collision distance (0.5 l0 here; 0.91 l0 measured), and the stop is counted.
 TEST(ParticleShifting, TheWallStopKeepsAShiftFromCarryingWaterOntoTheFloor) {
-  const auto [free_report, free_nearest] = stepWithAClosePair(1.0, true, false);
-  const auto [stop_report, stop_nearest] = stepWithAClosePair(1.0, true, true);
+  const auto [free_report, free_nearest] = stepWithAPairAtTheFloor(false);
+  const auto [stop_report, stop_nearest] = stepWithAPairAtTheFloor(true);
   std::printf("nearest wall particle after the step: %.3f l0 without the stop, %.3f l0 with it (%zu stops)\n",
               free_nearest / 0.01, stop_nearest / 0.01, stop_report.shift_wall_stops);
   EXPECT_EQ(0u, free_report.shift_wall_stops);

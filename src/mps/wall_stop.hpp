@@ -14,7 +14,6 @@
 // fluid particles: stopping the re-spacing against the water too (tried) lost 15 and 2 particles on waterfall_small.
 #pragma once
 
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
