@@ -313,6 +313,8 @@ SimulationState<D> sampleState() {
   s.particles = sampleParticles<D>(101);
   s.point_forces[3] = Vec<D>::Constant(1.0 / 3.0);
   s.point_forces[77] = Vec<D>::Constant(-2e-7 / 9.0);
+  s.gas_reference_pressure[5] = 2525.0 / 3.0;
+  s.gas_reference_pressure[90] = -1.0 / 7.0;
   return s;
 }
 
@@ -336,6 +338,11 @@ void checkpointRoundTrip() {
   for (const auto& [id, force] : s.point_forces) {
     ASSERT_EQ(r.point_forces.count(id), 1u) << "point " << id;
     EXPECT_EQ(0, std::memcmp(force.data(), r.point_forces.at(id).data(), sizeof(Vec<D>))) << "point " << id;
+  }
+  ASSERT_EQ(s.gas_reference_pressure.size(), r.gas_reference_pressure.size());
+  for (const auto& [id, reference] : s.gas_reference_pressure) {
+    ASSERT_EQ(r.gas_reference_pressure.count(id), 1u) << "gas " << id;
+    EXPECT_EQ(0, std::memcmp(&reference, &r.gas_reference_pressure.at(id), sizeof(double))) << "gas " << id;
   }
   expectSameParticles(s.particles, r.particles);
 }

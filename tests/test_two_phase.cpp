@@ -321,21 +321,38 @@ TEST(TwoPhaseBubble, CoarseBubbleRisesAsOneBodyWithBoundedPressure) {
 }
 
 // A run stopped and resumed from its checkpoint continues bit for bit: the bubble flags (delta_gl) that keep a
-// bubble enclosed through small gaps travel in the checkpoint with the particles.
-TEST(TwoPhaseBubble, ResumeFromCheckpointIsBitIdentical) {
-  TankRun whole(coarseBubbleCase());  // stops at 0.03 too (an output time), so both take the same steps
+// bubble enclosed through small gaps travel in the checkpoint with the particles, and so do the reference pressures
+// of a bubble started at the water's pressure (numerics.bubble_initial_pressure, with the memory term).
+struct ResumeCase {
+  const char* name;
+  const char* numerics;  // appended to the coarse bubble's [numerics]
+};
+
+class TwoPhaseResume : public ::testing::TestWithParam<ResumeCase> {};
+
+TEST_P(TwoPhaseResume, ResumeFromCheckpointIsBitIdentical) {
+  const std::string text = test_support::coarseBubbleCase(GetParam().numerics);
+  TankRun whole(text);  // stops at 0.03 too (an output time), so both take the same steps
   while (whole.state.time < 0.03 - 1e-12) whole.solver->step(0.03);
   while (whole.state.time < 0.06 - 1e-12) whole.solver->step(0.06);
-  TankRun first(coarseBubbleCase());
+  TankRun first(text);
   while (first.state.time < 0.03 - 1e-12) first.solver->step(0.03);
   const fs::path file = fs::temp_directory_path() / "mistfall_two_phase_resume.ckpt";
   writeCheckpoint<2>(file, first.state);
-  TankRun second(coarseBubbleCase());
+  TankRun second(text);
   second.state = readCheckpoint<2>(file);
   fs::remove(file);
   second.solver = std::make_unique<MpsSolver<2>>(second.config, second.state);
   EXPECT_GT(std::count(second.state.particles.enclosed.begin(), second.state.particles.enclosed.end(), 1), 50);
+  EXPECT_EQ(first.state.gas_reference_pressure, second.state.gas_reference_pressure);
   while (second.state.time < 0.06 - 1e-12) second.solver->step(0.06);
   EXPECT_EQ(whole.state.step, second.state.step);
   test_support::expectSameParticles(whole.state.particles, second.state.particles);
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Bubbles, TwoPhaseResume,
+    ::testing::Values(ResumeCase{"soft", ""},
+                      ResumeCase{"stiff_from_the_water_pressure", "scheme = \"stabilised\"\ncollision_distance = 0.8\n"
+                                                                  "gas_pressure_memory = true\n"}),
+    [](const ::testing::TestParamInfo<ResumeCase>& info) { return info.param.name; });

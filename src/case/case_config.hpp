@@ -191,6 +191,12 @@ struct NumericsConfig {
   // With gas_pressure_memory: the open gas's rows carry it too (true, the key's `true`) or only the bubbles' rows
   // (false, the key's "bubbles": the bubbles at the gas's stiffness, the open air as soft as without the key).
   bool gas_pressure_memory_open = true;
+  // With gas_pressure_memory: a fresh run's first step holds each bubble's row incompressible (no eq. (17) shift, no
+  // memory), so a bubble present at t = 0 starts at the pressure the water around it needs (its hydrostatic
+  // pressure), and the memory carries that on: p = P_0 + rho_g c^2 delta (the key's "water", the default). false
+  // ("zero"): the bubble starts at the ambient 0 Pa and breathes about its hydrostatic pressure (the runs before the
+  // twenty-sixth session). Bubbles that form later take the pressure the gas system gave their gas.
+  bool bubble_start_at_water_pressure = true;
   // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.

@@ -2,6 +2,7 @@
 #include "io/checkpoint.hpp"
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -21,8 +22,9 @@ namespace {
 
 constexpr char kMagic[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'C', 'K', 'P', 'T'};
 constexpr char kEndMarker[12] = {'M', 'I', 'S', 'T', 'F', 'A', 'L', 'L', 'E', 'N', 'D', '!'};
-constexpr std::uint32_t kVersion = 6;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids,
-                                       // 5 the vents' counts, 6 the entrained points' last forces
+constexpr std::uint32_t kVersion = 7;  // 2 added the enclosed flags, 3 the case fingerprint, 4 the particle ids,
+                                       // 5 the vents' counts, 6 the entrained points' last forces, 7 the bubble
+                                       // gas's reference pressures
 constexpr std::uint32_t kOldestVersion = 2;  // still read (no fingerprint)
 constexpr std::uint64_t kMaxFingerprint = 1 << 24;
 
@@ -196,6 +198,11 @@ void writeCheckpoint(const std::filesystem::path& file, const SimulationState<D>
       w.value(id);
       w.raw(force.data(), sizeof(Vec<D>));
     }
+    w.value(static_cast<std::uint64_t>(s.gas_reference_pressure.size()));
+    for (const auto& [id, reference] : s.gas_reference_pressure) {
+      w.value(id);
+      w.value(reference);
+    }
     const std::uint64_t sum = w.checksum();
     os.write(reinterpret_cast<const char*>(&sum), sizeof(sum));
     os.write(kEndMarker, sizeof(kEndMarker));
@@ -256,6 +263,17 @@ SimulationState<D> readCheckpoint(const std::filesystem::path& file, std::string
       r.raw(force.data(), sizeof(Vec<D>));
       if (id >= p.next_id || !force.allFinite()) fail(file, "invalid point force");
       s.point_forces[id] = force;
+    }
+  }
+  if (h.version >= 7) {
+    const auto references = r.value<std::uint64_t>();
+    if (references > r.remaining() / (sizeof(std::uint64_t) + sizeof(double)))
+      fail(file, "file is truncated (bad count of reference pressures)");
+    for (std::uint64_t k = 0; k < references; ++k) {
+      const auto id = r.value<std::uint64_t>();
+      const auto reference = r.value<double>();
+      if (id >= p.next_id || !std::isfinite(reference)) fail(file, "invalid reference pressure");
+      s.gas_reference_pressure[id] = reference;
     }
   }
   const std::uint64_t expected = r.checksum();

@@ -22,6 +22,11 @@ struct SimulationState {
   // The force each entrained point (entrained_bubbles.hpp) put on the water over its last step, by particle id: the
   // next step takes its echo out of the water's acceleration the point reads.
   std::map<std::uint64_t, Vec<D>> point_forces;
+  // The pressure at which a bubble's gas particle sits at its initial spacing, by particle id: set on a fresh run's
+  // first step for the gas of the bubbles present at t = 0 (numerics.bubble_initial_pressure = "water"), whose
+  // lattice is the gas at the pressure of the water around it, not at the ambient. eq. (17)'s row of a bubble then
+  // settles at P_0 + rho_g c^2 delta (solver_liquid.cpp). Gas without an entry is at its spacing at 0 Pa.
+  std::map<std::uint64_t, double> gas_reference_pressure;
 };
 
 }  // namespace mistfall

@@ -49,8 +49,13 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   // One group (merged unknown) per bubble, numbered in region order; its initial guess is the bubble's pressure
   // from the last step (its particles all hold it).
   std::vector<std::int32_t> group_of(n, -1), group_of_region(regions_.regionCount(), -1);
-  std::vector<double> group_shift, group_guess;
-  const double bubble_shift = std::isfinite(gas.sound_speed)
+  std::vector<double> group_shift, group_guess, group_reference;
+  // eq. (17)'s shift on a bubble's row; none on a fresh run's first step with the memory term
+  // (numerics.bubble_start_at_water_pressure): the bubble starts at the water's pressure, which the memory keeps
+  const bool start_at_water_pressure = state_.step == 0 && config_.numerics.gas_pressure_memory &&
+                                       config_.numerics.bubble_start_at_water_pressure;
+  auto& references = state_.gas_reference_pressure;
+  const double bubble_shift = std::isfinite(gas.sound_speed) && !start_at_water_pressure
                                   ? liquid.density / (gas.density * dt * dt * gas.sound_speed * gas.sound_speed)
                                   : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -64,9 +69,14 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
         group = static_cast<std::int32_t>(group_shift.size());
         group_shift.push_back(0.0);
         group_guess.push_back(p.pressure[i]);
+        group_reference.push_back(0.0);
       }
       group_of[i] = group;
       group_shift[group] += bubble_shift;
+      if (!references.empty())
+        if (const auto r = references.find(p.id[i]); r != references.end()) group_reference[group] += bubble_shift * r->second;
+    } else if (!references.empty() && p.phase[i] == Phase::Gas) {
+      references.erase(p.id[i]);  // out of its bubble, the gas is at its spacing at the ambient pressure
     } else {
       problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
                             hasFullNeighbourhood(i, roles_.in_liquid_system);
@@ -78,12 +88,14 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
-  // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step
+  // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step;
+  // the density-drift term's share gamma of the shift times the gas's reference pressure, so that the row settles at
+  // P_0 + rho_g c^2 delta, not at rho_g c^2 delta, for gas whose spacing is that of P_0 (bubble_initial_pressure)
   if (config_.numerics.gas_pressure_memory && std::isfinite(gas.sound_speed) &&
       source.kind == PressureSource::Mixed)
     for (std::size_t g = 0; g < group_shift.size(); ++g)
       lumped_.rhs[lumped_.first_group_row + static_cast<std::int64_t>(g)] +=
-          (1.0 - source.relaxation) * group_shift[g] * group_guess[g];
+          (1.0 - source.relaxation) * group_shift[g] * group_guess[g] + source.relaxation * group_reference[g];
   Eigen::VectorXd x = Eigen::VectorXd::Zero(lumped_.matrix.rows());
   for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
     const auto i = system_.particle_of[r];
@@ -100,6 +112,9 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     const double value = x[lumped_.column_of_row[r]];
     p.pressure[i] = group_of[i] >= 0 ? value : std::max(0.0, value);
   }
+  if (start_at_water_pressure)  // the first step's bubbles are their gas at its spacing at the pressure found
+    for (std::size_t i = 0; i < n; ++i)
+      if (group_of[i] >= 0) references[p.id[i]] = p.pressure[i];
   if (!surface_pressure_.empty())
     for (std::size_t i = 0; i < n; ++i)
       if (surface_pressure_[i] != 0.0) p.pressure[i] = surface_pressure_[i];
