@@ -244,6 +244,7 @@ TEST(CaseFileGas, BubbleGasKeys) {
   EXPECT_DOUBLE_EQ(d.numerics.bubble_regularisation, 10.0);
   EXPECT_FALSE(d.numerics.gas_pressure_memory);
   EXPECT_TRUE(d.numerics.bubble_start_at_water_pressure);
+  EXPECT_FALSE(d.numerics.bubble_divergence_whole);
   EXPECT_FALSE(d.numerics.gas_collision_after_correction);
   Parts p;
   p.numerics += "bubble_gas_motion = \"own_pressure\"\nbubble_regularisation = 0\ngas_pressure_memory = true\n"
@@ -271,6 +272,12 @@ TEST(CaseFileGas, BubbleGasKeys) {
   p = Parts{};
   p.numerics += "bubble_initial_pressure = \"hydrostatic\"\n";
   EXPECT_HAS(errorOf(p.text()), "allowed \"zero\" or \"water\"");
+  p = Parts{};
+  p.numerics += "bubble_divergence = \"whole_bubble\"\n";
+  EXPECT_TRUE(parseCase(p.text(), "t.toml").numerics.bubble_divergence_whole);
+  p = Parts{};
+  p.numerics += "bubble_divergence = \"whole\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"interface\" or \"whole_bubble\"");
   p = Parts{};
   p.numerics += "bubble_gas_motion = \"float\"\n";
   EXPECT_HAS(errorOf(p.text()), "allowed \"follow_liquid\" or \"own_pressure\"");

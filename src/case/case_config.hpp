@@ -197,6 +197,13 @@ struct NumericsConfig {
   // ("zero"): the bubble starts at the ambient 0 Pa and breathes about its hydrostatic pressure (the runs before the
   // twenty-sixth session). Bubbles that form later take the pressure the gas system gave their gas.
   bool bubble_start_at_water_pressure = true;
+  // "stabilised" scheme, a bubble's gas following the liquid (bubble_gas_motion not "own_pressure"): its velocity is
+  // no neighbour's velocity in the liquid's divergence (solver_liquid_stabilised.cpp). false ("interface", the
+  // default): nor in its own bubble's rows, which then read only the water's velocity across the interface; true
+  // ("whole_bubble"): the bubble's rows count each other's velocity, so that their sum is the flux of the extended
+  // velocity through the interface, the bubble's volume change (docs/two-phase.md: with the memory term a bubble at
+  // rest without gravity rings up from round-off with "interface", e-folding in 0.8 ms, and stays at rest with this).
+  bool bubble_divergence_whole = false;
   // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.

@@ -143,7 +143,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_initial_pressure",
+                "bubble_initial_pressure", "bubble_divergence",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction"});
   NumericsConfig& n = c.numerics;
@@ -206,6 +206,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   }
   if (int s = rd.choice(nm, np, "bubble_initial_pressure", {"zero", "water"}); s >= 0)
     n.bubble_start_at_water_pressure = s == 1;
+  if (int s = rd.choice(nm, np, "bubble_divergence", {"interface", "whole_bubble"}); s >= 0)
+    n.bubble_divergence_whole = s == 1;
   rd.boolean(nm, np, "gas_collision_after_correction", n.gas_collision_after_correction);
   if (int s = rd.choice(nm, np, "gas_operators", {"paper", "stabilised"}); s >= 0) n.gas_stabilised = s == 1;
   if (int s = rd.choice(nm, np, "vent_outlet", {"buffer", "zero_gradient"}); s >= 0) n.vent_zero_gradient = s == 1;

@@ -110,7 +110,10 @@ void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& nu
     } else if (source.kind == PressureSource::Standard) {
       sys.rhs[r] = rho / (dt * dt) * compression;
     } else {
-      auto carriesVelocity = [&](std::int32_t j) { return problem.carries_velocity[j] != 0; };
+      const std::int32_t group = problem.velocity_group.empty() ? -1 : problem.velocity_group[i];
+      auto carriesVelocity = [&](std::int32_t j) {
+        return problem.carries_velocity[j] != 0 || (group >= 0 && problem.velocity_group[j] == group);
+      };
       const double divergence = divergenceAt<D>(i, p.position, p.velocity, divergence_list, c, carriesVelocity);
       sys.rhs[r] = -rho / dt * divergence + source.relaxation * rho / (dt * dt) * compression;
     }

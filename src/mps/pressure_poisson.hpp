@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Sparse>
+#include <cstdint>
 #include <vector>
 
 #include "case/case_config.hpp"
@@ -55,6 +56,10 @@ struct PressureProblem {
   // The pressure a Dirichlet boundary holds (taking part, not unknown; empty = 0 for all): a gas vent's ambient
   // pressure (gas_vent.hpp). Row i's known neighbour j adds (its coefficient) * boundary_value[j] to the right.
   std::vector<double> boundary_value;
+  // Rows of one group count each other's velocity in the divergence, whether they carry it or not (>= 0; empty or
+  // -1 = none): a bubble's gas with numerics.bubble_divergence = "whole_bubble", so that the sum of its rows is the
+  // flux through its interface (bubble_pressure.hpp), while the water beside it does not count the gas's velocity.
+  std::vector<std::int32_t> velocity_group;
 };
 
 // Free-surface flags of the single-phase system: fluid or wall particles with n*_i < beta n0.

@@ -90,6 +90,7 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step (not with
   // numerics.gas_pressure_memory = "bubbles", which leaves the open gas's rows soft)
   problem_.extra_rhs.clear();
+  problem_.velocity_group.clear();  // the liquid system's bubble groups are not this system's
   problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)
   if (config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_open) {
     problem_.extra_rhs.assign(n, 0.0);

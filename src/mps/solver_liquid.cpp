@@ -83,6 +83,11 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     }
   }
   problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
+  // numerics.bubble_divergence = "whole_bubble": a bubble's rows count its gas's velocity too (pressure_poisson.hpp)
+  if (config_.numerics.bubble_divergence_whole)
+    problem_.velocity_group = group_of;
+  else
+    problem_.velocity_group.clear();
   if (stabilised) stabilisedPressureTerms(dt);
   const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,

@@ -100,6 +100,7 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
   findSurfaceTangents(last);
   const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
   problem_.extra_rhs.assign(n, 0.0);
+  problem_.velocity_group.clear();
   const double factor = constants_.laplacianFactor();
   const auto& rho = problem_.density_of;
   const auto& phi = problem_.interface_distance;
