@@ -73,13 +73,13 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
       }
       group_of[i] = group;
       group_shift[group] += bubble_shift;
-      if (!references.empty())
-        if (const auto r = references.find(p.id[i]); r != references.end()) group_reference[group] += bubble_shift * r->second;
-    } else if (!references.empty() && p.phase[i] == Phase::Gas) {
-      references.erase(p.id[i]);  // out of its bubble, the gas is at its spacing at the ambient pressure
+      if (const auto r = references.find(p.id[i]); r != references.end())
+        group_reference[group] += bubble_shift * r->second;
     } else {
       problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
                             hasFullNeighbourhood(i, roles_.in_liquid_system);
+      // out of its bubble, the gas is at its spacing at the ambient pressure
+      if (!references.empty() && p.phase[i] == Phase::Gas) references.erase(p.id[i]);
     }
   }
   problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
