@@ -607,6 +607,53 @@ TEST(CliSimulate, RunsAndResumesThroughTheExecutable) {
   EXPECT_NEAR(readCheckpoint<2>(run / "checkpoint.bin").time, 0.04, 1e-12);
 }
 
+// --trace writes particle ID's stages and changes no result: the traced run's checkpoint is the untraced one's, byte
+// for byte, and the trace's last row of the particle holds its place in that checkpoint.
+TEST(CliSimulate, ATraceFollowsTheParticleAndChangesNoResult) {
+  const fs::path dir = freshDir("cli_trace");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.02, 0.02));
+  const std::string args = "simulate " + quoted(case_file) + " --threads 1 --plain-progress --out ";
+  ASSERT_EQ(0, runCli(args + quoted(dir / "plain")).code);
+  const CliResult traced = runCli(args + quoted(dir / "traced") + " --trace 5 --trace-from 0.01");
+  ASSERT_EQ(0, traced.code) << traced.err;
+  EXPECT_TRUE(slurp(dir / "plain" / "checkpoint.bin") == slurp(dir / "traced" / "checkpoint.bin"));
+
+  std::ifstream in(dir / "traced" / "traces" / "trace_5.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(0u, line.rfind("time,step,stage,row,id,", 0)) << line;
+  std::size_t self_rows = 0;
+  std::vector<std::string> last;
+  std::map<std::string, int> stages;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream cs(line);
+    for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
+    ASSERT_GE(cells.size(), 12u) << line;
+    EXPECT_GE(std::stod(cells[0]), 0.01 - 1e-12);
+    if (cells[3] != "self") continue;
+    EXPECT_EQ("5", cells[4]);
+    ++self_rows, ++stages[cells[2]], last = cells;
+  }
+  EXPECT_GT(self_rows, 0u);
+  EXPECT_EQ(stages["predict"], stages["collision"]);  // every step's stages
+  EXPECT_EQ(stages["predict"], stages["open boundaries"]);
+  const auto state = readCheckpoint<2>(dir / "traced" / "checkpoint.bin");
+  const auto& p = state.particles;
+  const auto at = std::find(p.id.begin(), p.id.end(), 5u) - p.id.begin();
+  ASSERT_LT(static_cast<std::size_t>(at), p.size());
+  EXPECT_NEAR(p.position[at].x(), std::stod(last[9]), 1e-9);
+  EXPECT_NEAR(p.position[at].y(), std::stod(last[10]), 1e-9);
+}
+
+TEST(CliSimulate, TraceFromWithoutTraceIsAnError) {
+  const fs::path dir = freshDir("cli_trace_from");
+  const fs::path case_file = writeCase(dir, "case.toml", damBreakCase(0.02, 0.02));
+  const CliResult r = runCli("simulate " + quoted(case_file) + " --out " + quoted(dir / "run") + " --trace-from 0.01");
+  EXPECT_NE(0, r.code);
+  EXPECT_FALSE(fs::exists(dir / "run"));
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // 7. ASCII frames
 

@@ -148,6 +148,9 @@ struct NumericsConfig {
   double surface_neighbour_fraction = 0.0;
   double collision_distance = 0.5;      // too-close pair distance / l0
   double collision_restitution = 0.2;   // restitution of the collision model
+  // The collision model's wall limit (collision.hpp; a guard, counted: collision_wall_limits in diagnostics.csv): a
+  // velocity the pass changed keeps no approach to a wall or dummy particle within collision_distance.
+  bool collision_wall_limit = false;
   PressureSource pressure_source = PressureSource::Standard;
   double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
   // What gamma relaxes (sourceTermFor, mps/pressure_poisson.hpp): "step" (Tanaka & Masunaga), a fraction gamma of

@@ -32,6 +32,12 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   simulate->add_flag("--overwrite", sim.overwrite, "Replace the contents of an existing run directory");
   simulate->add_flag("--plain-progress", sim.force_plain_progress, "Log progress lines instead of a progress bar");
+  auto* trace = simulate->add_option("--trace", sim.trace_id,
+                                     "Developers: write particle ID and its neighbours within l0 after every stage "
+                                     "of each step to RUN_DIR/traces/trace_ID.csv (src/mps/particle_trace.hpp)");
+  simulate->add_option("--trace-from", sim.trace_from, "With --trace: from the step that starts at this time [s]")
+      ->needs(trace)
+      ->check(CLI::NonNegativeNumber);
   simulate->footer(
       "Every frame carries the six-category `category` array. With output.field_spacing > 0 every frame also\n"
       "writes its flow grid fields/fields_NNNNN.vti, and with `inline = true` in the case's [texture] table the\n"

@@ -13,7 +13,8 @@ namespace mistfall {
 const std::vector<std::string>& runDirectoryEntries() {
   static const std::vector<std::string> entries{
       "case.toml", "checkpoint.bin", "diagnostics.csv", "frames.pvd", "bubbles.csv", "vents.csv", "diverged.txt",
-      "frames",    "fields",         "categories.csv",  "texture",    "render",      "plots"};
+      "frames",    "fields",         "categories.csv",  "texture",    "render",      "plots",
+      "traces"};
   return entries;
 }
 

@@ -10,7 +10,7 @@
 namespace mistfall {
 
 // Files and folders a run directory may hold, all written by mistfall: simulate's case.toml, checkpoint.bin,
-// diagnostics.csv, frames.pvd, bubbles.csv, vents.csv, diverged.txt, frames/ and fields/; classify's categories.csv;
+// diagnostics.csv, frames.pvd, bubbles.csv, vents.csv, diverged.txt, frames/, fields/ and traces/ (--trace); classify's categories.csv;
 // texture/; render/; the tools' plots/.
 const std::vector<std::string>& runDirectoryEntries();
 

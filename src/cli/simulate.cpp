@@ -151,6 +151,11 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   const double interval = config.output.interval;
 
   MpsSolver<D> solver(config, state);
+  if (options.trace_id) {  // RUN_DIR/traces/trace_ID.csv (a developer's tool, particle_trace.hpp)
+    fs::create_directories(dir / "traces");
+    solver.traceParticle(*options.trace_id, options.trace_from,
+                         (dir / "traces" / ("trace_" + std::to_string(*options.trace_id) + ".csv")).string());
+  }
   PvdCollection collection(dir / kCollection);
   std::optional<double> resume_time;
   if (options.resume) {
@@ -228,6 +233,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.shift_wall_stops = std::exchange(guards.shift_wall_stops, 0);
     row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
     row.respacing_cuts = std::exchange(guards.respacing_cuts, 0);
+    row.collision_wall_limits = std::exchange(guards.collision_wall_limits, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -281,6 +287,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.shift_wall_stops += static_cast<std::int64_t>(last.shift_wall_stops);
         guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
         guards.respacing_cuts += static_cast<std::int64_t>(last.respacing_cuts);
+        guards.collision_wall_limits += static_cast<std::int64_t>(last.collision_wall_limits);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
         progress.update(state.time, state.step, state.dt);

@@ -2,6 +2,7 @@
 // the .pvd collection, diagnostics.csv and a checkpoint at every output time.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 
@@ -16,6 +17,8 @@ struct SimulateOptions {
   bool resume = false;                // continue from out_dir/checkpoint.bin
   bool overwrite = false;             // allow replacing an existing run directory
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
+  std::optional<std::uint64_t> trace_id;  // --trace: write this particle's stages to RUN_DIR/traces/trace_ID.csv
+  double trace_from = 0.0;                // --trace-from: from the step starting at this time [s]
 };
 
 // Exit codes: the contract of cli/exit_codes.hpp (1 bad input: nothing written; 3 diverged: frames written so far

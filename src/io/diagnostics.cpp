@@ -111,6 +111,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::shift_wall_stops>("shift_wall_stops"),
     column<&DiagnosticsRow::respacing_wall_stops>("respacing_wall_stops"),
     column<&DiagnosticsRow::respacing_cuts>("respacing_cuts"),
+    column<&DiagnosticsRow::collision_wall_limits>("collision_wall_limits"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

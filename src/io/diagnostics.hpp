@@ -76,6 +76,9 @@ struct DiagnosticsRow {
   // The gas system's re-spacings of a bubble's gas shortened to numerics.respacing_limit since the previous row
   // (particle-steps; a guard).
   std::int64_t respacing_cuts = 0;
+  // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
+  // row (particle-steps; a guard, mps/collision.hpp).
+  std::int64_t collision_wall_limits = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -155,10 +155,12 @@ const StepReport& MpsSolver<D>::step(double until) {
     auto t = timer_.scope(Stage::Predict);
     predict(dt);
   }
+  trace("predict");
   {
     auto t = timer_.scope(Stage::Collision);
     collide(dt);
   }
+  trace("collision");
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
     report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
@@ -192,13 +194,16 @@ const StepReport& MpsSolver<D>::step(double until) {
     else
       correctLiquid(dt);
   }
+  trace("liquid correction");
   if (config_.numerics.scheme == Scheme::Stabilised) {  // particle_shifting.hpp
     auto t = timer_.scope(Stage::Shifting);
     shiftParticles(dt);
+    trace("shifting");
   }
   if (roles_.enclosed_count > 0) {
     auto t = timer_.scope(Stage::BubbleGas);
     moveBubbleGas(dt);
+    trace("bubble gas motion");
   }
   // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
   if (roles_.gas_count > 0 && !oneEquation()) {
@@ -211,12 +216,16 @@ const StepReport& MpsSolver<D>::step(double until) {
     report_.seconds_pressure += gas_seconds;
     auto t = timer_.scope(Stage::GasCorrection);
     correctGas(dt);
+    trace("gas correction");
     collideCorrectedGas(dt);
+    trace("gas collision");
     riseEntrainedGas(dt);
+    trace("entrained gas rise");
   }
   if (entrainedPoints()) {
     auto t = timer_.scope(Stage::GasCorrection);
     moveEntrainedBubbles(dt);
+    trace("entrained bubbles");
   }
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
@@ -240,6 +249,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     state_.removed += outflow;
     removeReleasedPoints();
   }
+  trace("open boundaries");
   const bool reached = until - state_.time <= dt;
   state_.time = reached ? until : state_.time + dt;
   // An output time, where a checkpoint may be written: a run resumed from it starts without what the solver keeps
@@ -336,6 +346,19 @@ std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
   return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 
+template <int D>
+void MpsSolver<D>::traceParticle(std::uint64_t id, double from, const std::string& path) {
+  trace_ = std::make_unique<ParticleTrace<D>>(id, from, constants_.l0, path);
+  if (!trace_->open()) throw std::runtime_error("cannot write the trace file " + path);
+}
+
+template <int D>
+void MpsSolver<D>::traceStage(const char* stage) {
+  const auto& roles = roles_;
+  trace_->record(state_.time, state_.step, stage, state_.particles, gas_pressure_, constants_.l0,
+                 [&](std::size_t i) { return i < roles.open_gas.size() && roles.inGasSystem(i); });
+}
+
 // The neighbour-count test of numerics.surface_neighbour_fraction for fluid particles (walls always pass):
 // at least that fraction of a full lattice's neighbours within re, counting those with counts[j].
 template <int D>
@@ -426,21 +449,23 @@ void MpsSolver<D>::collide(double dt) {
   const auto& p = state_.particles;
   // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
   const auto& open_gas = roles_.open_gas;
-  report_.collisions = collideWhere(
+  const CollisionCount count = collideWhere(
       dt, [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); });
+  report_.collisions = count.reversals;
+  report_.collision_wall_limits = count.wall_limits;
 }
 
 // The collision model (collision.hpp) with numerics.collision_distance and collision_restitution, over the pairs
-// (i, j) where j may change i's velocity; the reversals it made.
+// (i, j) where j may change i's velocity, with numerics.collision_wall_limit; the reversals and wall limits it made.
 template <int D>
 template <class Affects>
-std::size_t MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
+CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
   auto& p = state_.particles;
   std::vector<double> mass(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
-  return resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_,
-                              config_.numerics.collision_distance * constants_.l0,
-                              config_.numerics.collision_restitution, dt, affects);
+  const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
+                             config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
+  return resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_, model, dt, affects);
 }
 
 // numerics.gas_collision_after_correction: the collision model once more, after the gas system's correction, for gas
@@ -453,10 +478,12 @@ template <int D>
 void MpsSolver<D>::collideCorrectedGas(double dt) {
   if (!config_.numerics.gas_collision_after_correction || config_.numerics.collision_distance <= 0.0) return;
   const auto& p = state_.particles;
-  report_.collisions += collideWhere(dt, [&](std::int64_t i, std::int32_t j) {
+  const CollisionCount count = collideWhere(dt, [&](std::int64_t i, std::int32_t j) {
     return roles_.inGasSystem(i) && !isVentGas(static_cast<std::size_t>(i)) &&
            (p.phase[j] == Phase::Liquid || isFixed(p.kind[j]));
   });
+  report_.collisions += count.reversals;
+  report_.collision_wall_limits += count.wall_limits;
 }
 
 // The walls' and dummies' pressure in the liquid system: paper scheme, extrapolated from the nearest wall particle

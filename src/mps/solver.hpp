@@ -24,10 +24,12 @@
 
 #include "case/case_config.hpp"
 #include "mps/bubble_pressure.hpp"
+#include "mps/collision.hpp"
 #include "mps/corrected_gradient.hpp"
 #include "mps/enclosed_gas.hpp"
 #include "mps/gas_vent.hpp"
 #include "mps/linear_solver.hpp"
+#include "mps/particle_trace.hpp"
 #include "mps/phase_coupling.hpp"
 #include "mps/entrained_bubbles.hpp"
 #include "mps/neighbor_search.hpp"
@@ -85,6 +87,7 @@ struct StepReport {
   bool dt_set_by_gas = false;
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
+  std::size_t collision_wall_limits = 0;  // velocities kept from approaching a wall by numerics.collision_wall_limit
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
@@ -125,6 +128,9 @@ class MpsSolver {
   const NeighborList& currentNeighbours();
   // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).
   std::vector<BubbleStats> currentBubbles();
+  // Writes particle `id` and its neighbours within l0 after every stage of each step from `from` on to the CSV file
+  // `path` (particle_trace.hpp; `mistfall simulate --trace`). Throws std::runtime_error when it cannot be written.
+  void traceParticle(std::uint64_t id, double from, const std::string& path);
 
  private:
   void buildNeighbours();
@@ -135,7 +141,7 @@ class MpsSolver {
   void collide(double dt);
   void collideCorrectedGas(double dt);
   template <class Affects>
-  std::size_t collideWhere(double dt, Affects&& affects);
+  CollisionCount collideWhere(double dt, Affects&& affects);
   void findBubbles();
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
@@ -194,6 +200,10 @@ class MpsSolver {
                    const char* which, int& iterations);
   void markEscaped();
   void checkHealth(double dt) const;
+  void trace(const char* stage) {
+    if (trace_ && trace_->active(state_.time)) traceStage(stage);
+  }
+  void traceStage(const char* stage);
 
   const CaseConfig& config_;
   SimulationState<D>& state_;
@@ -236,6 +246,7 @@ class MpsSolver {
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
   StageTimer timer_;
   double solve_seconds_ = 0.0;  // setup + solve seconds of the linear solves since the stage began
+  std::unique_ptr<ParticleTrace<D>> trace_;  // --trace (particle_trace.hpp); null when off
 };
 
 }  // namespace mistfall
