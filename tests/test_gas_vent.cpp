@@ -518,3 +518,37 @@ TEST(GasVent, WaterLeavingByTheOuterFaceBesideTheEdgeLeaves) {
   EXPECT_EQ(before - 1 + static_cast<std::size_t>(x.gas_in), e.p.size());
   for (std::size_t i = 0; i < e.p.size(); ++i) EXPECT_GE(e.p.position[i][1], -0.04) << "particle " << i;
 }
+
+// numerics.vent_liquid_stop: the top vent's first column (x = 0.005, layers from y = 0.305) is drawn inward at 0.3 m/s
+// by the air in front of it, 6 mm in 0.02 s, onto a droplet at (0.005, 0.296) under its mouth. Without the key its
+// first particle ends 0.3 l0 from the droplet (the pair the waterfall's roof vent made, docs/waterfall.md); with it
+// the column is held where it was and counted, and the other columns are driven as before.
+TEST(GasVent, AColumnDrawnOntoLiquidAtItsMouthIsHeldWithTheKey) {
+  for (const bool stop : {false, true}) {
+    SCOPED_TRACE(stop ? "vent_liquid_stop = true" : "without the key");
+    const CaseConfig config = parseCase(ductCase(0.0, stop ? "vent_liquid_stop = true\n" : ""), "duct.toml");
+    Particles<2> p = buildParticles<2>(config);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.phase[i] == Phase::Gas && std::abs(p.position[i][0] - 0.005) < 1e-9 && p.position[i][1] > 0.28 &&
+          p.position[i][1] < 0.3)
+        p.velocity[i] = Vec<2>(0.0, -0.3);
+    p.add(Vec<2>(0.005, 0.296), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+    const std::size_t droplet = p.size() - 1;
+    const std::vector<int> vent = ventOf<2>(p, config);
+    const std::vector<Vec<2>> start = p.position;
+    const VentExchange x = exchangeVentGas<2>(p, config, vent, start, 0.02, 1.2, Vec<2>(0.0, -9.81));
+    EXPECT_EQ(stop ? 1 : 0, x.liquid_stops);
+    double nearest = 1.0;
+    int moved = 0;
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      if (vent[i] != 1) continue;
+      if (std::abs(p.position[i][1] - start[i][1]) > 1e-12) ++moved;
+      nearest = std::min(nearest, (p.position[i] - p.position[droplet]).norm());
+    }
+    EXPECT_EQ(stop ? 0 : 4, moved);
+    if (stop)
+      EXPECT_GE(nearest, 0.5 * 0.01);  // no closer than the collision distance (0.5 l0, the case's default)
+    else
+      EXPECT_NEAR(0.003, nearest, 1e-12);
+  }
+}

@@ -227,6 +227,9 @@ struct NumericsConfig {
   // if each neighbour's own velocity went on into the vent (a pressure outlet's zero normal gradient), so a column
   // cannot draw the air it follows (docs/waterfall.md: measured better at 1 cm, worse at the 5 mm roof vent).
   bool vent_zero_gradient = false;
+  // A vent's column drawn inward onto liquid at its mouth is held (gas_vent.hpp; a guard, counted:
+  // vent_liquid_stops in diagnostics.csv).
+  bool vent_liquid_stop = false;
   // How a bubble's gas moves (docs/two-phase.md). FollowLiquid: with the liquid's velocity extended into the bubble,
   // re-spaced in position by the gas system. OwnPressure: like open gas, by its own pressure gradient from the gas
   // system (the paper's single-phase view of the gas), velocity and position.

@@ -112,6 +112,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::respacing_wall_stops>("respacing_wall_stops"),
     column<&DiagnosticsRow::respacing_cuts>("respacing_cuts"),
     column<&DiagnosticsRow::collision_wall_limits>("collision_wall_limits"),
+    column<&DiagnosticsRow::vent_liquid_stops>("vent_liquid_stops"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

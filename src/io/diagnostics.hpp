@@ -79,6 +79,9 @@ struct DiagnosticsRow {
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).
   std::int64_t collision_wall_limits = 0;
+  // Vent columns held at liquid in their mouth by numerics.vent_liquid_stop since the previous row (column-steps; a
+  // guard, mps/gas_vent.hpp).
+  std::int64_t vent_liquid_stops = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -102,6 +102,42 @@ std::int64_t placeEnteringGas(Particles<D>& p, const Columns<D>& cols, const Ven
   return left;
 }
 
+// numerics.vent_liquid_stop (gas_vent.hpp): the columns of vent v drawn inward whose drive over dt would bring one of
+// their particles within collision_distance of a liquid particle, approaching it, get u_n = 0. Returns how many.
+template <int D>
+std::int64_t holdColumnsAtLiquid(const Particles<D>& p, const CaseConfig& c, const Vent& vent, const Columns<D>& cols,
+                                 const std::vector<int>& start_vent, const std::vector<Vec<D>>& start, std::size_t v,
+                                 double dt, std::vector<double>& un) {
+  const double l0 = c.numerics.particle_spacing, reach = c.numerics.collision_distance * l0;
+  if (reach <= 0.0) return 0;
+  // The liquid near the box (within l0 of it): the only liquid a column's step can reach.
+  std::vector<Vec<D>> liquid;
+  for (std::size_t i = 0; i < start_vent.size(); ++i) {
+    if (p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Liquid) continue;
+    bool near = true;
+    for (int k = 0; k < D; ++k)
+      near = near && p.position[i][k] > vent.box.min[k] - l0 && p.position[i][k] < vent.box.max[k] + l0;
+    if (near) liquid.push_back(p.position[i]);
+  }
+  if (liquid.empty()) return 0;
+  std::vector<char> held(un.size(), 0);
+  for (std::size_t i = 0; i < start_vent.size(); ++i) {
+    if (start_vent[i] != static_cast<int>(v) || p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Gas) continue;
+    const int col = cols.of(start[i], vent, l0);
+    if (col < 0 || un[col] >= 0.0 || held[col]) continue;
+    Vec<D> move = Vec<D>::Zero();
+    move[vent.axis] = dt * vent.sign * un[col];
+    for (const Vec<D>& q : liquid) {
+      const Vec<D> r = q - start[i];
+      if (move.dot(r) > 0.0 && (r - move).squaredNorm() < reach * reach) held[col] = 1;
+    }
+  }
+  std::int64_t count = 0;
+  for (std::size_t k = 0; k < un.size(); ++k)
+    if (held[k]) un[k] = 0.0, ++count;
+  return count;
+}
+
 }  // namespace
 
 template <int D>
@@ -150,6 +186,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
     std::vector<double> un(cols.total, 0.0);
     for (int k = 0; k < cols.total; ++k)
       if (count[k] > 0) un[k] = sum[k] / count[k];
+    if (c.numerics.vent_liquid_stop) exchange.liquid_stops += holdColumnsAtLiquid<D>(p, c, vent, cols, start_vent, start, v, dt, un);
     // Drive the vent's gas; then remove what passed the outer face, and find the outermost fluid particle of each
     // column (what entered the box in the step included).
     for (std::size_t i = 0; i < n; ++i) {

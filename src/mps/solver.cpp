@@ -236,6 +236,7 @@ const StepReport& MpsSolver<D>::step(double until) {
       report_.vented_in = vented.gas_in;
       report_.vented_out = vented.gas_out;
       report_.vent_crowded_out = vented.gas_crowded_out;
+      report_.vent_liquid_stops = static_cast<std::size_t>(vented.liquid_stops);
       report_.vented_in_by_vent = vented.gas_in_by_vent;
       report_.vented_out_by_vent = vented.gas_out_by_vent;
       state_.vented_in += vented.gas_in;

@@ -87,6 +87,7 @@ struct StepReport {
   bool dt_set_by_gas = false;
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
+  std::size_t vent_liquid_stops = 0;    // vent columns held at liquid by numerics.vent_liquid_stop (gas_vent.hpp)
   std::size_t collision_wall_limits = 0;  // velocities kept from approaching a wall by numerics.collision_wall_limit
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
