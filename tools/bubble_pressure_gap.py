@@ -21,26 +21,19 @@ Needs Debian's python3-numpy (`make deps`; plot_frames' reader also loads python
 """
 import os
 import sys
-import tomllib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from overfall_profile import frames_between  # noqa: E402
-from plot_frames import KIND_FLUID, Parser, PlotError, read_vtp  # noqa: E402
+from overfall_profile import add_window_arguments, frames_between, load_case_doc  # noqa: E402
+from plot_frames import KIND_FLUID, PHASE_GAS, PHASE_LIQUID, Parser, PlotError, read_vtp  # noqa: E402
 
 import numpy as np  # noqa: E402
-
-LIQUID, GAS = 0, 1  # Phase (src/mps/particles.hpp)
 
 
 def read_bubble_case(run_dir):
     """(l0, link radius in l0) from RUN_DIR/case.toml: the solver's gas-region link (gas_region_link, 0 meaning
     radius_number_density, default 2.1)."""
     path = os.path.join(run_dir, "case.toml")
-    try:
-        with open(path, "rb") as f:
-            doc = tomllib.load(f)
-    except (OSError, tomllib.TOMLDecodeError) as e:
-        raise PlotError(f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
+    doc = load_case_doc(run_dir)
     numerics = doc.get("numerics", {})
     spacing = numerics.get("particle_spacing")
     if not isinstance(spacing, (int, float)) or spacing <= 0:
@@ -84,8 +77,8 @@ def bubbles_of_frame(a, l0, link, min_particles, water_within):
     of clusters of min_particles or more with no water within water_within l0."""
     fluid = a["kind"] == KIND_FLUID
     pts = a["Points"][:, :2]
-    gas = np.flatnonzero(fluid & (a["phase"] == GAS) & (a["enclosed"] == 1))
-    liquid = np.flatnonzero(fluid & (a["phase"] == LIQUID))
+    gas = np.flatnonzero(fluid & (a["phase"] == PHASE_GAS) & (a["enclosed"] == 1))
+    liquid = np.flatnonzero(fluid & (a["phase"] == PHASE_LIQUID))
     rows, dry = [], 0
     if gas.size < min_particles:
         return rows, dry
@@ -124,10 +117,7 @@ def measure(run_dir, chosen, l0, link, min_particles, water_within):
 def main():
     ap = Parser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir", metavar="RUN_DIR")
-    ap.add_argument("--from", dest="t_from", type=float, default=2.0, metavar="T",
-                    help="window start (s; default 2, after the waterfall cases' start-up)")
-    ap.add_argument("--to", dest="t_to", type=float, default=None, metavar="T",
-                    help="window end (s; default: the last frame)")
+    add_window_arguments(ap, default_from=2.0)
     ap.add_argument("--min-particles", metavar="N", type=int, default=6,
                     help="smallest cluster counted as a bubble (gas particles; default 6)")
     ap.add_argument("--link", metavar="R", type=float, default=None,

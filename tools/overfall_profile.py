@@ -62,13 +62,18 @@ def region_box(doc, name):
     raise PlotError(f"case.toml has no [[region]] named '{name}'")
 
 
-def read_overfall_case(run_dir, bed_region, pool_y):
+def load_case_doc(run_dir):
+    """RUN_DIR/case.toml parsed (a dict); PlotError when it cannot be read (shared with bubble_pressure_gap.py)."""
     path = os.path.join(run_dir, "case.toml")
     try:
         with open(path, "rb") as f:
-            doc = tomllib.load(f)
+            return tomllib.load(f)
     except (OSError, tomllib.TOMLDecodeError) as e:
-        raise PlotError(f"cannot read {path}: {e}") from None
+        raise PlotError(f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
+
+
+def read_overfall_case(run_dir, bed_region, pool_y):
+    doc = load_case_doc(run_dir)
     if doc.get("case", {}).get("dimension", 2) != 2:
         raise PlotError("overfall_profile measures 2D runs only")
     spacing = doc.get("numerics", {}).get("particle_spacing")
@@ -114,10 +119,13 @@ def channel_energy(frames, l0, g, start, x_brink, y_bed, length):
     return rows
 
 
-def add_window_arguments(ap):
-    """--from and --to: the frames averaged (shared with aeration_depth.py)."""
-    ap.add_argument("--from", dest="t_from", type=float, default=None,
-                    help="first frame time averaged (s; default: half the last frame's time)")
+def add_window_arguments(ap, default_from=None):
+    """--from and --to: the frames averaged (shared with aeration_depth.py, bubble_pressure_gap.py, pool_air.py);
+    --from defaults to `default_from`, or half the last frame's time."""
+    ap.add_argument("--from", dest="t_from", type=float, default=default_from,
+                    help="first frame time averaged (s; default: " +
+                         ("half the last frame's time)" if default_from is None else
+                          f"{default_from:g}, after the waterfall cases' start-up)"))
     ap.add_argument("--to", dest="t_to", type=float, default=None, help="last frame time averaged (s; default: last)")
 
 

@@ -33,6 +33,7 @@ except ImportError as e:  # pragma: no cover
 NUMPY_TYPE = {"Float64": "<f8", "Float32": "<f4", "UInt8": "u1", "Int8": "i1", "Int32": "<i4", "UInt32": "<u4",
               "Int64": "<i8", "UInt64": "<u8"}
 KIND_FLUID, KIND_WALL, KIND_DUMMY, KIND_ESCAPED, KIND_INFLOW, KIND_POINT = 0, 1, 2, 3, 4, 5  # ParticleKind (particles.hpp)
+PHASE_LIQUID, PHASE_GAS = 0, 1  # Phase (particles.hpp)
 COLOR_FIELDS = ("pressure", "speed", "phase", "kind", "category")
 # The six-category classification (src/classify/classification.hpp): 1..6; a colour each.
 CATEGORY_LABEL = "category\n1 liquid bulk, 2 liquid surface, 3 droplet\n4 gas bulk, 5 gas surface, 6 bubble"

@@ -20,12 +20,10 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from overfall_profile import frames_between  # noqa: E402
-from plot_frames import KIND_FLUID, KIND_POINT, Parser, PlotError, read_vtp  # noqa: E402
+from overfall_profile import add_window_arguments, frames_between  # noqa: E402
+from plot_frames import KIND_FLUID, KIND_POINT, PHASE_GAS, PHASE_LIQUID, Parser, PlotError, read_vtp  # noqa: E402
 
 import numpy as np  # noqa: E402
-
-LIQUID, GAS = 0, 1  # Phase (src/mps/particles.hpp)
 
 
 def count_frame(a, x_from, x_to, air_below, water_above):
@@ -33,19 +31,16 @@ def count_frame(a, x_from, x_to, air_below, water_above):
     fluid = a["kind"] == KIND_FLUID
     x, y = a["Points"][:, 0], a["Points"][:, 1]
     span = (x >= x_from) & (x <= x_to)
-    gas = int(np.sum(fluid & (a["phase"] == GAS) & span & (y < air_below)))
+    gas = int(np.sum(fluid & (a["phase"] == PHASE_GAS) & span & (y < air_below)))
     points = int(np.sum(a["kind"] == KIND_POINT))
-    water = int(np.sum(fluid & (a["phase"] == LIQUID) & span & (y > water_above)))
+    water = int(np.sum(fluid & (a["phase"] == PHASE_LIQUID) & span & (y > water_above)))
     return gas, points, water
 
 
 def main():
     ap = Parser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir", metavar="RUN_DIR")
-    ap.add_argument("--from", dest="t_from", type=float, default=2.0, metavar="T",
-                    help="window start (s; default 2, after the waterfall cases' start-up)")
-    ap.add_argument("--to", dest="t_to", type=float, default=None, metavar="T",
-                    help="window end (s; default: the last frame)")
+    add_window_arguments(ap, default_from=2.0)
     ap.add_argument("--x-from", metavar="X", type=float, default=0.3,
                     help="the pool's span starts here (m; default 0.3, the waterfall cases' brink)")
     ap.add_argument("--x-to", metavar="X", type=float, default=1.0,
