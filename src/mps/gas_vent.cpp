@@ -186,7 +186,8 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
     std::vector<double> un(cols.total, 0.0);
     for (int k = 0; k < cols.total; ++k)
       if (count[k] > 0) un[k] = sum[k] / count[k];
-    if (c.numerics.vent_liquid_stop) exchange.liquid_stops += holdColumnsAtLiquid<D>(p, c, vent, cols, start_vent, start, v, dt, un);
+    if (c.numerics.vent_liquid_stop)
+      exchange.liquid_stops += holdColumnsAtLiquid<D>(p, c, vent, cols, start_vent, start, v, dt, un);
     // Drive the vent's gas; then remove what passed the outer face, and find the outermost fluid particle of each
     // column (what entered the box in the step included).
     for (std::size_t i = 0; i < n; ++i) {

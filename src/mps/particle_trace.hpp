@@ -33,7 +33,6 @@ class ParticleTrace {
     out_.precision(10);
   }
   bool open() const { return static_cast<bool>(out_); }
-  std::uint64_t id() const { return id_; }
   bool active(double step_time) const { return step_time >= from_; }
 
   // `gas_system(i)` says whether i is in the gas system; `gas_pressure` may be empty (no gas system this step).

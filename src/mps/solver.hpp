@@ -87,7 +87,6 @@ struct StepReport {
   bool dt_set_by_gas = false;
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
-  std::size_t vent_liquid_stops = 0;    // vent columns held at liquid by numerics.vent_liquid_stop (gas_vent.hpp)
   std::size_t collision_wall_limits = 0;  // velocities kept from approaching a wall by numerics.collision_wall_limit
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
@@ -97,6 +96,7 @@ struct StepReport {
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by the same key
   std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)
+  std::size_t vent_liquid_stops = 0;   // vent columns held at liquid by numerics.vent_liquid_stop (gas_vent.hpp)
   std::size_t gap_water_floors = 0;    // water pressures raised to the air's by numerics.gap_water_floor
 };
 
