@@ -475,6 +475,17 @@ TEST(GasVent, CaseFileChecksTheVent) {
   text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\ninflow = \"total\"");
   EXPECT_HAS(errorOf(text), "vent[1].inflow");
   EXPECT_HAS(errorOf(text), "total_pressure");
+  // liquid_exit: "outer_face" by default, "inner_face", nothing else.
+  using LiquidExit = Vent::LiquidExit;
+  EXPECT_EQ(LiquidExit::OuterFace, parseCase(duct, "duct.toml").vents[1].liquid_exit);
+  text = duct;
+  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\nliquid_exit = \"inner_face\"");
+  EXPECT_EQ(LiquidExit::InnerFace, parseCase(text, "duct.toml").vents[1].liquid_exit);
+  EXPECT_EQ(LiquidExit::OuterFace, parseCase(text, "duct.toml").vents[0].liquid_exit);
+  text = duct;
+  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\nliquid_exit = \"inner\"");
+  EXPECT_HAS(errorOf(text), "vent[1].liquid_exit");
+  EXPECT_HAS(errorOf(text), "inner_face");
 }
 
 // A vented run resumed from a checkpoint goes on as the unbroken run did, particle for particle (the vents keep
@@ -550,5 +561,36 @@ TEST(GasVent, AColumnDrawnOntoLiquidAtItsMouthIsHeldWithTheKey) {
       EXPECT_GE(nearest, 0.5 * 0.01);  // no closer than the collision distance (0.5 l0, the case's default)
     else
       EXPECT_NEAR(0.003, nearest, 1e-12);
+  }
+}
+
+// A vent's liquid_exit: spray at (0.005, 0.302), inside the top vent's box 2 mm above its inner face (y = 0.3), and a
+// droplet at (0.045, 0.296) under its mouth. With "outer_face" (the default) both stay, liquid in the box is not
+// driven and the columns keep their gas; with "inner_face" the one in the box leaves, counted as liquid out, and the
+// one under the mouth stays. No gas is removed either way.
+TEST(GasVent, LiquidInAVentsBoxLeavesAtTheInnerFaceWithTheKey) {
+  for (const bool inner : {false, true}) {
+    SCOPED_TRACE(inner ? "liquid_exit = \"inner_face\"" : "the default");
+    std::string text = ductCase(0.0);
+    if (inner) text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\nliquid_exit = \"inner_face\"");
+    const CaseConfig config = parseCase(text, "duct.toml");
+    Particles<2> p = buildParticles<2>(config);
+    p.add(Vec<2>(0.005, 0.302), Vec<2>(0.0, 0.5), ParticleKind::Fluid, Phase::Liquid);
+    p.add(Vec<2>(0.045, 0.296), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+    const std::uint64_t in_box = p.id[p.size() - 2], at_mouth = p.id[p.size() - 1];
+    const std::vector<int> vent = ventOf<2>(p, config);
+    const std::vector<Vec<2>> start = p.position;
+    const std::size_t before = p.size();
+    const VentExchange x = exchangeVentGas<2>(p, config, vent, start, 0.002, 1.2, Vec<2>(0.0, -9.81));
+    EXPECT_EQ(inner ? 1 : 0, x.liquid_out);
+    EXPECT_EQ(0, x.gas_out);
+    EXPECT_EQ(before - x.liquid_out + x.gas_in, p.size());
+    int found_in_box = 0, found_at_mouth = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      found_in_box += p.id[i] == in_box;
+      found_at_mouth += p.id[i] == at_mouth;
+    }
+    EXPECT_EQ(inner ? 0 : 1, found_in_box);
+    EXPECT_EQ(1, found_at_mouth);
   }
 }

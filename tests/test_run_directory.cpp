@@ -96,7 +96,7 @@ TEST(RunDirectoryOverwrite, RemovesEverythingMistfallDerivedAndKeepsTheRest) {
   const fs::path run = tinyRun("overwrite_all");
   for (const char* f : {"categories.csv", "texture/texture_00000.bin", "render/png/frame_00009.png",
                         "render/small_dam_break.mp4", "plots/frame_00002.png", "fields/fields_00009.vti",
-                        "frames/frame_00009.vtp", "diverged.txt", "notes.txt", "mine/keep.txt"}) {
+                        "frames/frame_00009.vtp", "diverged.txt", "case_changes.txt", "notes.txt", "mine/keep.txt"}) {
     fs::create_directories((run / f).parent_path());
     std::ofstream(run / f) << "old\n";
   }
@@ -105,7 +105,7 @@ TEST(RunDirectoryOverwrite, RemovesEverythingMistfallDerivedAndKeepsTheRest) {
   const CliResult r = runCli("simulate " + quoted(short_case) + " --out " + quoted(run) +
                              " --overwrite --threads 1 --plain-progress");
   ASSERT_EQ(0, r.code) << r.err;
-  for (const char* gone : {"categories.csv", "texture", "render", "plots", "fields", "diverged.txt",
+  for (const char* gone : {"categories.csv", "texture", "render", "plots", "fields", "diverged.txt", "case_changes.txt",
                            "frames/frame_00002.vtp", "frames/frame_00009.vtp"})
     EXPECT_FALSE(fs::exists(run / gone)) << gone;
   EXPECT_TRUE(fs::exists(run / "frames/frame_00001.vtp"));
@@ -162,6 +162,32 @@ TEST(RunDirectoryResume, EditsThatChangeTheSimulationAreRefusedNamingTheKey) {
       EXPECT_TRUE(fs::exists(run / "frames/frame_00003.vtp"));
     }
   }
+}
+
+// --accept-case-change (a developer's what-if on a copy of a run): the edit the test above refuses goes on, is named
+// in a note and recorded in case_changes.txt with the time it took effect, and the next checkpoint carries the
+// edited case, so a plain --resume of the run goes on; without --resume the flag is refused.
+TEST(RunDirectoryResume, AcceptCaseChangeGoesOnAndRecordsTheChange) {
+  const fs::path run = tinyRun("accept_change");
+  editCase(run, "end_time = 0.04", "end_time = 0.08");
+  editCase(run, "[physics]\n", "[physics]\nliquid = { density = 998.0 }\n");
+  CliResult r = runCli("simulate --resume " + quoted(run) + " --accept-case-change --until 0.06 --threads 1 "
+                       "--plain-progress");
+  ASSERT_EQ(0, r.code) << r.err;
+  EXPECT_NE(r.err.find("accepted by --accept-case-change: from t = 0.04"), std::string::npos) << r.err;
+  const std::string record = slurp(run / "case_changes.txt");
+  EXPECT_NE(record.find("resumed at t = 0.04"), std::string::npos) << record;
+  EXPECT_NE(record.find("physics.liquid.density = (absent) in the checkpoint, 998 in case.toml"), std::string::npos)
+      << record;
+  r = runCli("simulate --resume " + quoted(run) + " --threads 1 --plain-progress");
+  EXPECT_EQ(0, r.code) << r.err;
+  EXPECT_TRUE(fs::exists(run / "frames/frame_00004.vtp"));
+  EXPECT_EQ(record, slurp(run / "case_changes.txt"));  // nothing changed since: nothing added
+  r = runCli("simulate " + quoted(run / "case.toml") + " --out " + quoted(scratchRoot() / "accept_new") +
+             " --accept-case-change --threads 1");
+  EXPECT_EQ(1, r.code) << r.err;
+  EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(scratchRoot() / "accept_new"));
 }
 
 TEST(RunDirectoryResume, ACheckpointFromAnotherRunIsRefused) {

@@ -126,7 +126,7 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table& t = *(*a)[i].as_table();
       const std::string p = "vent[" + std::to_string(i) + "]";
-      rd.checkKeys(t, p, {"name", "min", "max", "direction", "inflow"});
+      rd.checkKeys(t, p, {"name", "min", "max", "direction", "inflow", "liquid_exit"});
       if (!has_gas)
         rd.fail(p + ": a vent opens the air to the ambient, and this case has no gas region; allowed with a "
                     "region of material = \"gas\"");
@@ -135,6 +135,8 @@ void readOpenBoundaries(const Reader& rd, const toml::table& root, CaseConfig& c
       readBox(rd, t, p, c, v.box);
       unitDirection(t, p, v.axis, v.sign);
       if (rd.choice(t, p, "inflow", {"total_pressure", "static"}) == 1) v.inflow = Vent::Inflow::Static;
+      if (rd.choice(t, p, "liquid_exit", {"outer_face", "inner_face"}) == 1)
+        v.liquid_exit = Vent::LiquidExit::InnerFace;
       for (const Region& r : c.regions)
         if (r.material == Material::Wall && overlap(r.box, v.box, c.dimension))
           rd.fail(p + " overlaps wall region \"" + r.name + "\"; allowed a vent box clear of walls (cut the opening "

@@ -69,6 +69,9 @@ struct Vent {
   // The pressure of the air it lets in (gas_vent.hpp): the ambient's total pressure (the air drawn from rest, the
   // default), or its static pressure.
   enum class Inflow { TotalPressure, Static } inflow = Inflow::TotalPressure;
+  // Where liquid leaves the domain through it (gas_vent.hpp): past the outer face (the default), or as soon as it
+  // enters the box at the inner face (an opening to the atmosphere takes the spray that reaches it).
+  enum class LiquidExit { OuterFace, InnerFace } liquid_exit = LiquidExit::OuterFace;
 };
 
 struct PhaseProperties {

@@ -28,8 +28,9 @@ int main(int argc, char** argv) {
   simulate->add_option("--until", sim.until, "Stop at this simulated time [s], at most output.end_time (default: it)");
   simulate->add_option("--threads,-j", sim.threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 4096));
   simulate->add_flag("--ascii", sim.ascii, "Write ASCII VTK files instead of binary");
-  simulate->add_option("--resume", resume_dir, "Continue the run in this directory from its last checkpoint")
-      ->check(CLI::ExistingDirectory);
+  auto* resume = simulate->add_option("--resume", resume_dir,
+                                      "Continue the run in this directory from its last checkpoint")
+                     ->check(CLI::ExistingDirectory);
   simulate->add_flag("--overwrite", sim.overwrite, "Replace the contents of an existing run directory");
   simulate->add_flag("--plain-progress", sim.force_plain_progress, "Log progress lines instead of a progress bar");
   auto* trace = simulate->add_option("--trace", sim.trace_id,
@@ -38,14 +39,20 @@ int main(int argc, char** argv) {
   simulate->add_option("--trace-from", sim.trace_from, "With --trace: from the step that starts at this time [s]")
       ->needs(trace)
       ->check(CLI::NonNegativeNumber);
+  simulate->add_flag("--accept-case-change", sim.accept_case_change,
+                     "Developers, with --resume: go on although case.toml changed in what it simulates (a what-if "
+                     "from a copy of a run's checkpoint); the changes are listed and recorded in "
+                     "RUN_DIR/case_changes.txt")
+      ->needs(resume);
   simulate->footer(
       "Every frame carries the six-category `category` array. With output.field_spacing > 0 every frame also\n"
       "writes its flow grid fields/fields_NNNNN.vti, and with `inline = true` in the case's [texture] table the\n"
       "texture stage runs inline: RUN_DIR/texture/ (the files of `mistfall texture RUN_DIR`, byte for byte the\n"
       "same) at every frame; --resume rebuilds the cloud from the saved frames first. docs/texture.md.\n"
       "--resume refuses a checkpoint written for another case: a change of case.toml that changes the simulation\n"
-      "(dimension, domain, physics, numerics, output.interval and field_spacing, regions, inflows, outflows);\n"
-      "output.end_time, [classify], [texture], [render] and names may change. A case that cannot fit in the\n"
+      "(dimension, domain, physics, numerics, output.interval and field_spacing, regions, inflows, outflows,\n"
+      "vents); output.end_time, [classify], [texture], [render] and names may change (--accept-case-change lets the\n"
+      "rest change too, on a copy of a run, and records it in case_changes.txt). A case that cannot fit in the\n"
       "memory available is refused before anything is written.\n" +
       std::string(mistfall::kExitCodeContract));
 

@@ -26,7 +26,8 @@ std::string number(double v) {
 
 template <int D>
 std::vector<std::string> checkResume(const fs::path& run, const SimulationState<D>& state,
-                                     const std::string& checkpoint_fingerprint, const std::string& case_fingerprint) {
+                                     const std::string& checkpoint_fingerprint, const std::string& case_fingerprint,
+                                     std::string* accepted) {
   std::vector<std::string> notes;
   const fs::path checkpoint = run / "checkpoint.bin";
   if (checkpoint_fingerprint.empty()) {
@@ -36,7 +37,12 @@ std::vector<std::string> checkResume(const fs::path& run, const SimulationState<
     std::string refused, harmless;
     for (const CaseChange& c : compareFingerprints(checkpoint_fingerprint, case_fingerprint))
       (c.harmless ? harmless : refused) += "\n  " + describe(c);
-    if (!refused.empty())
+    if (!refused.empty() && accepted) {
+      *accepted = refused;
+      notes.push_back("case.toml changed since the checkpoint in keys that change the simulation, accepted by "
+                      "--accept-case-change: from t = " + number(state.time) + " s on the run is another case "
+                      "(recorded in " + (run / "case_changes.txt").string() + "):" + refused);
+    } else if (!refused.empty())
       throw InputError("cannot resume " + run.string() + ": its checkpoint was written for another case: " +
                        (run / "case.toml").string() + " differs in what changes the simulation:" + refused +
                        "\n(a checkpoint from another run, or case.toml edited; to run the edited case, start it "
@@ -71,8 +77,8 @@ std::vector<std::string> checkResume(const fs::path& run, const SimulationState<
 }
 
 template std::vector<std::string> checkResume<2>(const fs::path&, const SimulationState<2>&, const std::string&,
-                                                 const std::string&);
+                                                 const std::string&, std::string*);
 template std::vector<std::string> checkResume<3>(const fs::path&, const SimulationState<3>&, const std::string&,
-                                                 const std::string&);
+                                                 const std::string&, std::string*);
 
 }  // namespace mistfall

@@ -14,7 +14,7 @@ const std::vector<std::string>& runDirectoryEntries() {
   static const std::vector<std::string> entries{
       "case.toml", "checkpoint.bin", "diagnostics.csv", "frames.pvd", "bubbles.csv", "vents.csv", "diverged.txt",
       "frames",    "fields",         "categories.csv",  "texture",    "render",      "plots",
-      "traces"};
+      "traces",    "case_changes.txt"};
   return entries;
 }
 

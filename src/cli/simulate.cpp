@@ -45,6 +45,7 @@ constexpr const char* kCollection = "frames.pvd";
 constexpr const char* kBubbles = "bubbles.csv";
 constexpr const char* kVents = "vents.csv";  // a case with vents
 constexpr const char* kDiverged = "diverged.txt";  // written when the run diverges
+constexpr const char* kCaseChanges = "case_changes.txt";  // --accept-case-change: where the case changed
 
 constexpr const char* kTexture = "texture";      // texture.inline = true: the texture stage's files
 
@@ -137,8 +138,18 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   if (options.resume) {
     std::string stored;
     state = readCheckpoint<D>(dir / kCheckpoint, &stored);
-    for (const std::string& note : checkResume<D>(dir, state, stored, fingerprint))
+    std::string accepted;
+    for (const std::string& note :
+         checkResume<D>(dir, state, stored, fingerprint, options.accept_case_change ? &accepted : nullptr))
       std::cerr << "mistfall simulate: note: " << note << "\n";
+    if (!accepted.empty()) {  // RUN_DIR/case_changes.txt: when the run became another case, and how
+      const fs::path record = dir / kCaseChanges;
+      const std::string before = fs::exists(record) ? readText(record) : std::string();
+      writeFileAtomically(record, [&](std::ostream& out) {
+        out << before << "resumed at t = " << std::setprecision(17) << state.time << " s (step " << state.step
+            << ") with case.toml changed in what it simulates (--accept-case-change):" << accepted << "\n";
+      });
+    }
     if (!config.texture.run_inline && fs::exists(dir / kTexture))
       std::cerr << "mistfall simulate: note: " << (dir / kTexture) << " is not extended (texture.inline = false): "
                 << "run `mistfall texture " << dir.string() << " --overwrite` when the run is done\n";

@@ -19,6 +19,7 @@ struct SimulateOptions {
   bool force_plain_progress = false;  // log lines instead of a redrawn bar
   std::optional<std::uint64_t> trace_id;  // --trace: write this particle's stages to RUN_DIR/traces/trace_ID.csv
   double trace_from = 0.0;                // --trace-from: from the step starting at this time [s]
+  bool accept_case_change = false;        // --accept-case-change: resume a case.toml edited in what it simulates
 };
 
 // Exit codes: the contract of cli/exit_codes.hpp (1 bad input: nothing written; 3 diverged: frames written so far

@@ -209,6 +209,13 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
       if (p.kind[i] != ParticleKind::Fluid) continue;
       const double xi = vent.sign * p.position[i][a];
       if (xi < cols.inner) continue;
+      // With liquid_exit = "inner_face", liquid leaves as soon as it is in the box: spray does not stand in a column.
+      if (vent.liquid_exit == Vent::LiquidExit::InnerFace && p.phase[i] == Phase::Liquid &&
+          insideBox<D>(p.position[i], vent.box)) {
+        remove[i] = 1;
+        ++exchange.liquid_out;
+        continue;
+      }
       // Only a vent's own particles leave by it, also one that crossed the outer face beside the box's edge (water
       // sliding out along a wall next to the vent: it was counted as escaped, waterfall_small at 4.32 s).
       if (xi >= cols.outer && i < n && start_vent[i] == static_cast<int>(v)) {
