@@ -583,6 +583,7 @@ TEST(GasVent, LiquidInAVentsBoxLeavesAtTheInnerFaceWithTheKey) {
     const std::size_t before = p.size();
     const VentExchange x = exchangeVentGas<2>(p, config, vent, start, 0.002, 1.2, Vec<2>(0.0, -9.81));
     EXPECT_EQ(inner ? 1 : 0, x.liquid_out);
+    EXPECT_EQ((std::vector<std::int64_t>{0, inner ? 1 : 0}), x.liquid_out_by_vent);  // the top vent's, for vents.csv
     EXPECT_EQ(0, x.gas_out);
     EXPECT_EQ(before - x.liquid_out + x.gas_in, p.size());
     int found_in_box = 0, found_at_mouth = 0;

@@ -51,19 +51,21 @@ TEST(VentLog, WritesEachVentsExchangeAndItsAirFluxAndKeepsEarlierLinesOnResume) 
   {
     VentLog log(file, {"cavity", "roof"}, 1e-4, std::nullopt);
     log.append(0.0, 0.0, {0, 0}, {0, 0});
-    log.append(0.02, 0.02, {3, 10}, {7, 2});  // cavity: 4 out; roof: 8 in
+    log.append(0.02, 0.02, {3, 10}, {7, 2}, {0, 5});  // cavity: 4 out; roof: 8 in, and 5 liquid out
     log.append(0.04, 0.02, {1, 0}, {0, 0});
   }
   auto all = linesOf(file);
   ASSERT_EQ(7u, all.size());
   EXPECT_EQ(VentLog::header(), all[0]);
-  EXPECT_EQ((std::vector<std::string>{"0", "cavity", "0", "0", "0"}), fieldsOf(all[1]));
+  EXPECT_EQ((std::vector<std::string>{"0", "cavity", "0", "0", "0", "0"}), fieldsOf(all[1]));
   auto cavity = fieldsOf(all[3]), roof = fieldsOf(all[4]);
   EXPECT_EQ("cavity", cavity[1]);
   EXPECT_EQ("3", cavity[2]);
   EXPECT_EQ("7", cavity[3]);
   EXPECT_NEAR(4 * 1e-4 / 0.02, std::stod(cavity[4]), 1e-12);   // 0.02 m^2/s out
   EXPECT_NEAR(-8 * 1e-4 / 0.02, std::stod(roof[4]), 1e-12);    // 0.04 m^2/s in
+  EXPECT_EQ("0", cavity[5]);
+  EXPECT_EQ("5", roof[5]);
   {
     VentLog resumed(file, {"cavity", "roof"}, 1e-4, 0.02);  // the lines at t = 0.04 are dropped
     resumed.append(0.03, 0.01, {0, 0}, {1, 0});
@@ -114,6 +116,23 @@ TEST(VentLog, SimulateWritesEveryVentsCountsAndResumesThem) {
   second.out_dir = dir / "resumed", second.resume = true, second.threads = 1, second.force_plain_progress = true;
   ASSERT_EQ(0, simulateQuietly(second));
   EXPECT_EQ(lines, linesOf(dir / "resumed" / "vents.csv"));
+}
+
+// A run whose vents.csv was written before the liquid_out column: resumed, its kept lines get the column empty (not
+// recorded), so every line has the header's six fields, and the new lines carry it.
+TEST(VentLog, ResumingAnOlderFileLeavesTheNewColumnEmptyOnItsLines) {
+  const fs::path dir = freshDir("vent_log_older");
+  const fs::path file = dir / "vents.csv";
+  std::ofstream(file, std::ios::binary) << "time,vent,gas_in,gas_out,air_out\n0,roof,0,0,0\n0.02,roof,3,1,-0.01\n";
+  {
+    VentLog resumed(file, {"roof"}, 1e-4, 0.02);
+    resumed.append(0.04, 0.02, {0}, {2}, {1});
+  }
+  const auto all = linesOf(file);
+  ASSERT_EQ(4u, all.size());
+  EXPECT_EQ(VentLog::header(), all[0]);
+  EXPECT_EQ("0.02,roof,3,1,-0.01,", all[2]);
+  EXPECT_EQ((std::vector<std::string>{"0.040000000000000001", "roof", "0", "2", "0.01", "1"}), fieldsOf(all[3]));
 }
 
 TEST(VentLog, ACaseWithoutVentsWritesNone) {

@@ -179,6 +179,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   // vents.csv: each vent's exchange since the last output (a case with vents only).
   std::optional<VentLog> vent_log;
   std::vector<std::int64_t> vent_in(config.vents.size(), 0), vent_out(config.vents.size(), 0);
+  std::vector<std::int64_t> vent_liquid(config.vents.size(), 0);
   double vent_since = state.time;  // the last output's time
   if (!config.vents.empty()) {
     std::vector<std::string> names;
@@ -254,7 +255,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     previous = row;
     bubble_log.append(state.time, bubbles);
     if (vent_log) {
-      vent_log->append(state.time, state.time - vent_since, vent_in, vent_out);
+      vent_log->append(state.time, state.time - vent_since, vent_in, vent_out, vent_liquid);
+      std::fill(vent_liquid.begin(), vent_liquid.end(), 0);
       std::fill(vent_in.begin(), vent_in.end(), 0);
       std::fill(vent_out.begin(), vent_out.end(), 0);
       vent_since = state.time;
@@ -302,7 +304,8 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.collision_wall_limits += static_cast<std::int64_t>(last.collision_wall_limits);
         guards.vent_liquid_stops += static_cast<std::int64_t>(last.vent_liquid_stops);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
-          vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v];
+          vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v],
+          vent_liquid[v] += last.vented_liquid_by_vent[v];
         progress.update(state.time, state.step, state.dt);
       }
       if (std::abs(state.time - state.next_frame * interval) <= eps) writeOutput();

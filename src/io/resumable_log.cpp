@@ -1,5 +1,6 @@
 #include "io/resumable_log.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -21,6 +22,10 @@ std::ofstream openResumableLog(const std::filesystem::path& file, const std::str
       if (time && *time <= *resume_time + 1e-12) kept.push_back(line);
     }
   }
+  // A line written before a column was added gets that column empty (not recorded), so every line has the header's.
+  const auto fields = [](const std::string& l) { return std::count(l.begin(), l.end(), ',') + 1; };
+  for (auto& l : kept)
+    if (fields(l) < fields(header)) l.append(static_cast<std::size_t>(fields(header) - fields(l)), ',');
   writeFileAtomically(file, [&](std::ostream& os) {
     os << header << '\n';
     for (const auto& l : kept) os << l << '\n';

@@ -10,7 +10,8 @@
 namespace mistfall {
 
 // Writes `file` anew with its header line, keeping, on resume, the lines whose time is <= resume_time (+1e-12; a torn
-// last line without its newline is dropped), and returns it opened for appending (`what` names it in errors).
+// last line without its newline is dropped; a kept line with fewer fields than the header, from before a column was
+// added, gets the missing ones empty), and returns it opened for appending (`what` names it in errors).
 std::ofstream openResumableLog(const std::filesystem::path& file, const std::string& header,
                                std::optional<double> resume_time, const std::string& what);
 

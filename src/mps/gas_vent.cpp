@@ -162,6 +162,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
   if (c.vents.empty()) return exchange;
   exchange.gas_in_by_vent.assign(c.vents.size(), 0);
   exchange.gas_out_by_vent.assign(c.vents.size(), 0);
+  exchange.liquid_out_by_vent.assign(c.vents.size(), 0);
   const double l0 = c.numerics.particle_spacing;
   const std::size_t n = start_vent.size();  // the particles that existed at the step's start
   std::vector<char> remove(p.size(), 0);
@@ -214,6 +215,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
           insideBox<D>(p.position[i], vent.box)) {
         remove[i] = 1;
         ++exchange.liquid_out;
+        ++exchange.liquid_out_by_vent[v];
         continue;
       }
       // Only a vent's own particles leave by it, also one that crossed the outer face beside the box's edge (water
@@ -221,7 +223,7 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
       if (xi >= cols.outer && i < n && start_vent[i] == static_cast<int>(v)) {
         remove[i] = 1;
         ++(p.phase[i] == Phase::Gas ? exchange.gas_out : exchange.liquid_out);
-        if (p.phase[i] == Phase::Gas) ++exchange.gas_out_by_vent[v];
+        ++(p.phase[i] == Phase::Gas ? exchange.gas_out_by_vent : exchange.liquid_out_by_vent)[v];
         continue;
       }
       const int col = cols.of(p.position[i], vent, l0);

@@ -69,7 +69,7 @@ struct VentExchange {
   std::int64_t liquid_out = 0;  // liquid removed past outer faces
   std::int64_t gas_crowded_out = 0;  // of gas_out: gas that entered a box within l0/2 of its column's gas
   std::int64_t liquid_stops = 0;     // columns held by numerics.vent_liquid_stop (liquid at their mouth)
-  std::vector<std::int64_t> gas_in_by_vent, gas_out_by_vent;  // the same per vent, in the case's order
+  std::vector<std::int64_t> gas_in_by_vent, gas_out_by_vent, liquid_out_by_vent;  // per vent, in the case's order
 };
 
 // numerics.vent_liquid_stop (a guard, counted in liquid_stops): a column drawn inward whose drive would bring one of

@@ -239,6 +239,7 @@ const StepReport& MpsSolver<D>::step(double until) {
       report_.vent_liquid_stops = static_cast<std::size_t>(vented.liquid_stops);
       report_.vented_in_by_vent = vented.gas_in_by_vent;
       report_.vented_out_by_vent = vented.gas_out_by_vent;
+      report_.vented_liquid_by_vent = vented.liquid_out_by_vent;
       state_.vented_in += vented.gas_in;
       state_.vented_out += vented.gas_out;
       state_.removed += vented.liquid_out;

@@ -70,6 +70,7 @@ struct StepReport {
   std::int64_t vented_in = 0;      // gas created at the vents' outer faces in the step (gas_vent.hpp)
   std::int64_t vented_out = 0;     // gas removed past the vents' outer faces in the step
   std::vector<std::int64_t> vented_in_by_vent, vented_out_by_vent;  // the same per vent (the case's order)
+  std::vector<std::int64_t> vented_liquid_by_vent;  // liquid removed through each vent in the step (in `removed`)
   std::size_t entrained_gas_swaps = 0;  // entrained gas particles that rose by exchange in the step
   // numerics.entrained_bubble_diameter (entrained_bubbles.hpp): gas particles that left the lattice as points, points
   // that returned to it at the surface, point steps shortened next to a wall
