@@ -464,28 +464,25 @@ TEST(GasVent, CaseFileChecksTheVent) {
   const std::string bad = errorOf(ductCase(0.0, "vent_outlet = \"open\"\n"));
   EXPECT_HAS(bad, "numerics.vent_outlet");
   EXPECT_HAS(bad, "zero_gradient");
-  // inflow: "total_pressure" by default, "static", nothing else.
-  using Inflow = Vent::Inflow;
-  EXPECT_EQ(Inflow::TotalPressure, parseCase(duct, "duct.toml").vents[1].inflow);
-  text = duct;
-  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\ninflow = \"static\"");
-  EXPECT_EQ(Inflow::Static, parseCase(text, "duct.toml").vents[1].inflow);
-  EXPECT_EQ(Inflow::TotalPressure, parseCase(text, "duct.toml").vents[0].inflow);
-  text = duct;
-  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\ninflow = \"total\"");
-  EXPECT_HAS(errorOf(text), "vent[1].inflow");
-  EXPECT_HAS(errorOf(text), "total_pressure");
-  // liquid_exit: "outer_face" by default, "inner_face", nothing else.
-  using LiquidExit = Vent::LiquidExit;
-  EXPECT_EQ(LiquidExit::OuterFace, parseCase(duct, "duct.toml").vents[1].liquid_exit);
-  text = duct;
-  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\nliquid_exit = \"inner_face\"");
-  EXPECT_EQ(LiquidExit::InnerFace, parseCase(text, "duct.toml").vents[1].liquid_exit);
-  EXPECT_EQ(LiquidExit::OuterFace, parseCase(text, "duct.toml").vents[0].liquid_exit);
-  text = duct;
-  text.replace(text.find("direction = [0, 1]"), 18, "direction = [0, 1]\nliquid_exit = \"inner\"");
-  EXPECT_HAS(errorOf(text), "vent[1].liquid_exit");
-  EXPECT_HAS(errorOf(text), "inner_face");
+  // Each vent choice: its default on both vents; the other value, set on the top vent only; a bad value named with
+  // the allowed ones.
+  auto checkChoice = [&](const std::string& key, auto member, auto default_value, const std::string& other,
+                         auto other_value, const std::string& allowed) {
+    SCOPED_TRACE(key);
+    auto withKey = [&](const std::string& value) {
+      std::string t = duct;
+      t.replace(t.find("direction = [0, 1]"), 18, "direction = [0, 1]\n" + key + " = \"" + value + "\"");
+      return t;
+    };
+    EXPECT_EQ(default_value, parseCase(duct, "duct.toml").vents[1].*member);
+    EXPECT_EQ(other_value, parseCase(withKey(other), "duct.toml").vents[1].*member);
+    EXPECT_EQ(default_value, parseCase(withKey(other), "duct.toml").vents[0].*member);
+    EXPECT_HAS(errorOf(withKey("open")), "vent[1]." + key);
+    EXPECT_HAS(errorOf(withKey("open")), allowed);
+  };
+  checkChoice("inflow", &Vent::inflow, Vent::Inflow::TotalPressure, "static", Vent::Inflow::Static, "total_pressure");
+  checkChoice("liquid_exit", &Vent::liquid_exit, Vent::LiquidExit::OuterFace, "inner_face",
+              Vent::LiquidExit::InnerFace, "inner_face");
 }
 
 // A vented run resumed from a checkpoint goes on as the unbroken run did, particle for particle (the vents keep
