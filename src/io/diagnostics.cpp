@@ -113,6 +113,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::respacing_cuts>("respacing_cuts"),
     column<&DiagnosticsRow::collision_wall_limits>("collision_wall_limits"),
     column<&DiagnosticsRow::vent_liquid_stops>("vent_liquid_stops"),
+    column<&DiagnosticsRow::neighbour_surfaces>("neighbour_surfaces"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

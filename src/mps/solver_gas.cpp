@@ -58,8 +58,9 @@ void MpsSolver<D>::solveGasPressure(double dt) {
   for (std::int64_t i = 0; i < n; ++i) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
     if (mirrored && (isMirroredWall(p.kind[i]) || mirroredLiquid(i))) problem_.takes_part[i] = 0;  // known part below
-    problem_.unknown[i] = problem_.takes_part[i] &&
-                          (closed || (gas_number_density_[i] >= beta_n0 && hasFullNeighbourhood(i, active_flags)));
+    const bool dense = gas_number_density_[i] >= beta_n0;
+    problem_.unknown[i] = problem_.takes_part[i] && (closed || (dense && hasFullNeighbourhood(i, active_flags)));
+    if (problem_.takes_part[i] && !closed && dense && !problem_.unknown[i]) ++report_.neighbour_surfaces;
     // (mirrored walls' rest enters through mirroredWallTerm below; the liquid's velocity stays in the divergence)
     problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));
     // A bubble and the liquid ring around it form a block with no free surface: with c = infinity its pressure

@@ -76,8 +76,9 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
       if (const auto r = references.find(p.id[i]); r != references.end())
         group_reference[group] += bubble_shift * r->second;
     } else {
-      problem_.unknown[i] = problem_.takes_part[i] && p.number_density[i] >= beta_n0 &&
-                            hasFullNeighbourhood(i, roles_.in_liquid_system);
+      const bool dense = problem_.takes_part[i] && p.number_density[i] >= beta_n0;
+      problem_.unknown[i] = dense && hasFullNeighbourhood(i, roles_.in_liquid_system);
+      if (dense && !problem_.unknown[i]) ++report_.neighbour_surfaces;
       // out of its bubble, the gas is at its spacing at the ambient pressure
       if (!references.empty() && p.phase[i] == Phase::Gas) references.erase(p.id[i]);
     }

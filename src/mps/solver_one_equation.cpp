@@ -72,10 +72,11 @@ void MpsSolver<D>::solveOneEquationPressure(double dt) {
     // A void inside the fluid is not empty space: in a closed box nothing is a free surface; in an open one a
     // particle short of neighbours is, if it is gas that water does not enclose (the air's top; a bubble's gas always
     // carries an unknown) or water with no gas around it (water bordering empty space, not a gap at an interface).
-    const bool short_of_neighbours =
-        p.number_density[i] < beta_n0 || !hasFullNeighbourhood(i, roles_.in_liquid_system);
+    const bool sparse = p.number_density[i] < beta_n0;
+    const bool short_of_neighbours = sparse || !hasFullNeighbourhood(i, roles_.in_liquid_system);
     auto bordersSpace = [&] { return p.phase[i] == Phase::Gas ? !p.enclosed[i] : !gasWithin(i); };
     problem_.unknown[i] = closed || !short_of_neighbours || !bordersSpace();  // bordersSpace only when short
+    if (!problem_.unknown[i] && !sparse) ++report_.neighbour_surfaces;
     if (vented(i)) {  // a vent's gas holds the ambient pressure (below); numerics.vent_outlet
       problem_.unknown[i] = 0;
       if (config_.numerics.vent_zero_gradient) problem_.carries_velocity[i] = 0;
