@@ -149,6 +149,9 @@ struct NumericsConfig {
   // Also a free surface: a fluid particle with fewer neighbours within re than this fraction of a full
   // lattice's (0 = off). Catches the clumps of a splash, whose n* is high but whose neighbourhood is not.
   double surface_neighbour_fraction = 0.0;
+  // Also a free surface: a fluid particle whose neighbours within re lie lopsided, |sum_j w_ij r_ij / |r_ij|| above
+  // this fraction of n0 (0 = off; after the symmetric-arrangement criterion of Khayyer, Gotoh & Shao 2009).
+  double surface_asymmetry = 0.0;
   double collision_distance = 0.5;      // too-close pair distance / l0
   double collision_restitution = 0.2;   // restitution of the collision model
   // The collision model's wall limit (collision.hpp; a guard, counted: collision_wall_limits in diagnostics.csv): a

@@ -139,7 +139,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.checkKeys(nm, np,
                {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
                 "pressure_repulsion", "particle_shifting", "shift_limit", "shift_wall_stop", "respacing_limit", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
-                "surface_threshold", "surface_neighbour_fraction", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
+                "surface_threshold", "surface_neighbour_fraction", "surface_asymmetry", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
@@ -168,6 +168,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "dt_min", {0.0, n.dt_max, true, true, "numerics.dt_max"}, n.dt_min);
   rd.number(nm, np, "surface_threshold", {0.0, 1.0, true, true}, n.surface_threshold);
   rd.number(nm, np, "surface_neighbour_fraction", {0.0, 1.0, false, true}, n.surface_neighbour_fraction);
+  rd.number(nm, np, "surface_asymmetry", {0.0, 1.0, false, false}, n.surface_asymmetry);
   rd.number(nm, np, "collision_distance", {0.0, 1.0, false, true}, n.collision_distance);
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
   rd.boolean(nm, np, "collision_wall_limit", n.collision_wall_limit);
