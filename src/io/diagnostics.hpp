@@ -82,8 +82,9 @@ struct DiagnosticsRow {
   // Vent columns held at liquid in their mouth by numerics.vent_liquid_stop since the previous row (column-steps; a
   // guard, mps/gas_vent.hpp).
   std::int64_t vent_liquid_stops = 0;
-  // Fluid particles dense enough to carry a pressure unknown (n >= beta n0) that numerics.surface_neighbour_fraction
-  // made free surface (p = 0) since the previous row (particle-solves, every pressure system; a threshold, not physics).
+  // Fluid particles dense enough to carry a pressure unknown (n >= beta n0) that numerics.surface_neighbour_fraction or
+  // surface_asymmetry made free surface (p = 0) since the previous row (particle-solves, every pressure system;
+  // thresholds, not physics).
   std::int64_t neighbour_surfaces = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).

@@ -89,8 +89,8 @@ struct StepReport {
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
   std::size_t collision_wall_limits = 0;  // velocities kept from approaching a wall by numerics.collision_wall_limit
-  // fluid particles dense enough (n >= beta n0) made free surface (p = 0) by numerics.surface_neighbour_fraction alone,
-  // in every system of the step
+  // fluid particles dense enough (n >= beta n0) made free surface (p = 0) by numerics.surface_neighbour_fraction or
+  // surface_asymmetry alone, in every system of the step
   std::size_t neighbour_surfaces = 0;
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
