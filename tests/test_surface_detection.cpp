@@ -11,6 +11,7 @@
 #include "case/scene.hpp"
 #include "mps/number_density.hpp"
 #include "mps/solver.hpp"
+#include "support/tank_walls.hpp"
 
 using namespace mistfall;
 
@@ -137,22 +138,7 @@ material = "water"
 min = [0.0, 0.0]
 max = [0.01, 0.01]
 velocity = [-0.15, -0.23]
-[[region]]
-name = "floor"
-material = "wall"
-min = [-0.04, -0.04]
-max = [0.24, 0.0]
-[[region]]
-name = "left"
-material = "wall"
-min = [-0.04, 0.0]
-max = [0.0, 0.2]
-[[region]]
-name = "right"
-material = "wall"
-min = [0.2, 0.0]
-max = [0.24, 0.2]
-)";
+)" + test_support::tankWalls(0.2, 0.2, 0.04);
   const CaseConfig c = parseCase(text, "kicked_tank.toml");
   SimulationState<2> s;
   s.particles = buildParticles<2>(c);
