@@ -5,8 +5,10 @@
 # + bubble points, one of the points far from the pool) and 4 and 10 water particles above the pool, so 6.0 and 7.0 a
 # frame; around them, in every frame, what must not count: gas above y = 0.14 m or outside the span, liquid under
 # the pool, wall, escaped and inflow particles, water beside the span; and a frame at t = 1.0 s, outside the window,
-# with 10 gas particles, 10 points and 12 water particles. The options move the span and the heights. Bad input
-# exits 1 with a one-line message.
+# with 10 gas particles, 10 points and 12 water particles. The options move the span and the heights. The pool's
+# packing (with [numerics] particle_spacing = 0.1 m in case.toml; no line without it): under y = 0.10 m in the span
+# the frames hold 3 and 6 gas and 1 and 1 water fluid particles (not the water under the floor), in a box of 7 l0^2,
+# so 0.786 (water 0.143, air 0.643). Bad input exits 1 with a one-line message.
 # Usage: test_pool_air.sh SOURCE_DIR
 set -euo pipefail
 source_dir=$1
@@ -33,7 +35,8 @@ def frame(gas, points, water):
             (0.5, 0.05, WALL, GAS), (0.5, 0.05, ESCAPED, GAS),                 # not fluid
             (0.5, 0.05, FLUID, LIQUID), (0.5, 0.145, FLUID, LIQUID),           # water in the pool
             (0.2, 0.44, FLUID, LIQUID), (1.02, 0.2, FLUID, LIQUID),            # water beside the span
-            (0.5, 0.2, WALL, LIQUID), (0.5, 0.2, INFLOW, LIQUID)]              # not fluid
+            (0.5, 0.2, WALL, LIQUID), (0.5, 0.2, INFLOW, LIQUID),              # not fluid
+            (0.5, -0.01, FLUID, LIQUID)]                                       # under the floor
     return pts
 
 frames = [frame(10, 10, 12), frame(3, 2, 4), frame(6, 1, 10)]
@@ -55,6 +58,14 @@ PY
 out=$("$py" "$tool" "$run")                    # the default window: from 2 s to the last frame
 echo "$out"
 check "$out" 2 6.0 7.0
+if grep -q "packing" <<<"$out"; then echo "FAIL: a packing without the particle spacing" >&2; exit 1; fi
+printf '[case]\nname = "hand"\n[numerics]\nparticle_spacing = 0.1\n' >"$run/case.toml"
+out=$("$py" "$tool" "$run")
+check "$out" 2 6.0 7.0
+grep -q "the pool's packing     0.786 (.* l0 = 0.1 m: water 0.143, air 0.643); least 0.571, most 1.000" <<<"$out" ||
+  { echo "FAIL: the pool's packing: $out" >&2; exit 1; }
+grep -q "the pool's packing     0.000 " <<<"$("$py" "$tool" "$run" --packing-below 0.04)" ||
+  { echo "FAIL: the packing's height" >&2; exit 1; }
 grep -q "gas particles under y = 0.14 m, x 0.3-1 m: 4.5; bubble points: 1.5" <<<"$out" ||
   { echo "FAIL: gas particles and points apart" >&2; exit 1; }
 check "$("$py" "$tool" "$run" --from 2.2)" 1 7.0 10.0
@@ -73,4 +84,5 @@ expect_fail "frames.pvd does not exist" "$work/empty"
 expect_fail "no frame between t = 5" "$run" --from 5
 expect_fail "must lie below --x-to" "$run" --x-from 1.0 --x-to 0.3
 expect_fail "invalid float" "$run" --x-to far
+expect_fail "must be above the floor" "$run" --packing-below 0
 echo "pool_air: ok"
