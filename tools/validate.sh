@@ -67,7 +67,7 @@ echo "== the same on the stabilised scheme (its channel keeps the critical energ
 OVERFALL_SCHEME=stabilised "$(dirname "${BASH_SOURCE[0]}")/validate_overfall.sh" "$build" "$out/overfall"
 
 echo "== the waterfall with air, cases/waterfall_small.toml over 8.5 s (no gas guard): losses, guard counts, brink and"
-echo "   nappe (Rouse), the air-flow pattern of the paper's Figs. 4-5, plunging-jet aeration (docs/two-phase.md)"
+echo "   nappe (Rouse), the air-flow pattern of the paper's Figs. 4-5, plunging-jet aeration, the pool's air and packing"
 run_case waterfall_small
 tools_dir="$(dirname "${BASH_SOURCE[0]}")"
 /usr/bin/python3 - "$out/waterfall_small/diagnostics.csv" <<'PY' || true
@@ -83,3 +83,4 @@ PY
 /usr/bin/python3 "$tools_dir/overfall_profile.py" "$out/waterfall_small" --from 2 | grep -E "last l0|^nappe" || true
 /usr/bin/python3 "$tools_dir/air_flow_pattern.py" "$out/waterfall_small" --from 2 | tail -n 5 || true
 /usr/bin/python3 "$tools_dir/aeration_depth.py" "$out/waterfall_small" --from 2 | grep -E "^air under|^jet  *measured" || true
+/usr/bin/python3 "$tools_dir/pool_air.py" "$out/waterfall_small" --from 2 | tail -n 3 || true   # the pool's packing: ~0.97 full
