@@ -183,6 +183,15 @@ TEST(RunDirectoryResume, AcceptCaseChangeGoesOnAndRecordsTheChange) {
   EXPECT_EQ(0, r.code) << r.err;
   EXPECT_TRUE(fs::exists(run / "frames/frame_00004.vtp"));
   EXPECT_EQ(record, slurp(run / "case_changes.txt"));  // nothing changed since: nothing added
+  // the output interval numbers the frames: changing it is refused even with the flag, before anything is written
+  // (a finer interval had left the resume stepping nowhere, forever)
+  const fs::path fine = tinyRun("accept_interval");
+  editCase(fine, "interval = 0.02", "interval = 0.01");
+  const auto untouched = snapshot(fine);
+  r = runCli("simulate --resume " + quoted(fine) + " --accept-case-change --threads 1 --plain-progress");
+  EXPECT_EQ(1, r.code) << r.err;
+  EXPECT_NE(r.err.find("output.interval changed"), std::string::npos) << r.err;
+  EXPECT_TRUE(untouched == snapshot(fine)) << "a refused resume changed the run directory";
   r = runCli("simulate " + quoted(run / "case.toml") + " --out " + quoted(scratchRoot() / "accept_new") +
              " --accept-case-change --threads 1");
   EXPECT_EQ(1, r.code) << r.err;

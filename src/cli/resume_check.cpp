@@ -35,8 +35,17 @@ std::vector<std::string> checkResume(const fs::path& run, const SimulationState<
                     "whether case.toml changed since is not checked");
   } else {
     std::string refused, harmless;
-    for (const CaseChange& c : compareFingerprints(checkpoint_fingerprint, case_fingerprint))
+    bool interval_changed = false;
+    for (const CaseChange& c : compareFingerprints(checkpoint_fingerprint, case_fingerprint)) {
       (c.harmless ? harmless : refused) += "\n  " + describe(c);
+      interval_changed = interval_changed || c.key == "output.interval";
+    }
+    // The frames are numbered by the output interval (frame k at t = k interval), so a resume cannot change it:
+    // the next frame's number would lie in the past (a resume with a finer interval had stepped nowhere, forever).
+    if (interval_changed && accepted)
+      throw InputError("cannot resume " + run.string() + " with --accept-case-change: output.interval changed, and "
+                       "the frames are numbered by it (frame k at t = k interval); keep the checkpoint's interval, "
+                       "or start the edited case anew with --overwrite" + refused);
     if (!refused.empty() && accepted) {
       *accepted = refused;
       notes.push_back("case.toml changed since the checkpoint in keys that change the simulation, accepted by "
