@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   simulate->add_flag("--accept-case-change", sim.accept_case_change,
                      "Developers, with --resume: go on although case.toml changed in what it simulates (a what-if "
                      "from a copy of a run's checkpoint); the changes are listed and recorded in "
-                     "RUN_DIR/case_changes.txt")
+                     "RUN_DIR/case_changes.txt (output.interval cannot change: the frames are numbered by it)")
       ->needs(resume);
   simulate->footer(
       "Every frame carries the six-category `category` array. With output.field_spacing > 0 every frame also\n"
