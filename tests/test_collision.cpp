@@ -108,3 +108,39 @@ TEST(Collision, TheWallLimitLeavesEveryOtherReversalAsItWas) {
     }
   }
 }
+
+// numerics.collision_passes: an air particle (i) between water approaching it from the left at 2 m/s and air at rest
+// 0.6 l0 to its right (the traced loss of waterfall_small in its twenty-ninth session, docs/waterfall.md). One Jacobi
+// pass reverses i off the water, straight at the air on its right, which that pass did not see approaching (2.4
+// m/s, e = 0.2); the second reverses that approach (and sends i back towards the water at 1.04 m/s); the passes
+// settle with the three moving together at the water's speed, no pair approaching, in nine passes that reverse
+// two pairs each and a tenth that reverses none.
+TEST(Collision, FurtherPassesReverseTheApproachesTheFirstMade) {
+  for (int passes : {1, 2, 10}) {
+    SCOPED_TRACE(passes);
+    Scene s(Vec<2>(5.0, 0.0), Vec<2>::Zero(), kAir);  // i: index 0, far from the wall column at x = 0
+    s.addWater(Vec<2>(4.3, 0.0), Vec<2>(2.0, 0.0));    // the water approaching i
+    const std::size_t water = s.position.size() - 1;
+    s.addWater(Vec<2>(5.6, 0.0), Vec<2>::Zero());      // the air on i's right (its mass set below)
+    const std::size_t air = s.position.size() - 1;
+    s.mass[air] = kAir;
+    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    search.build(s.position, s.kind, s.nl);
+    const CollisionCount count =
+        resolveCollisionPasses<2>(passes, s.position, s.velocity, s.kind, s.mass, s.nl,
+                                  CollisionModel{0.8 * kL0, 0.2, false}, kDt, [](std::int64_t, std::int32_t) {
+                                    return true;
+                                  });
+    auto approach = [&](std::size_t j) {  // i's approach to j (> 0: closing) while within the distance
+      const Vec<2> r = s.position[j] - s.position[0];
+      return r.norm() < 0.8 * kL0 ? (s.velocity[0] - s.velocity[j]).dot(r.normalized()) : 0.0;
+    };
+    if (passes == 1) EXPECT_GT(approach(air), 2.0);
+    if (passes == 2) EXPECT_LT(approach(air), 0.0);
+    if (passes == 10) {
+      EXPECT_LT(approach(air), 1e-3);
+      EXPECT_LT(approach(water), 1e-3);
+      EXPECT_EQ(18u, count.reversals);
+    }
+  }
+}

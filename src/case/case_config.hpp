@@ -157,6 +157,11 @@ struct NumericsConfig {
   // The collision model's wall limit (collision.hpp; a guard, counted: collision_wall_limits in diagnostics.csv): a
   // velocity the pass changed keeps no approach to a wall or dummy particle within collision_distance.
   bool collision_wall_limit = false;
+  // Passes of the collision model a stage (collision.hpp; experimental, 1 = the model as published): each pass after
+  // the first reverses the approaching pairs within the distance that the pass before left or made, since a Jacobi
+  // pass's reversal can send a particle into a third one that no pair of it saw (docs/waterfall.md, twenty-ninth
+  // session). Its reversals count with the collisions.
+  int collision_passes = 1;
   PressureSource pressure_source = PressureSource::Standard;
   double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
   // What gamma relaxes (sourceTermFor, mps/pressure_poisson.hpp): "step" (Tanaka & Masunaga), a fraction gamma of

@@ -145,7 +145,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_initial_pressure", "bubble_divergence",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
-                "gap_water_floor", "gas_collision_after_correction", "collision_wall_limit", "vent_liquid_stop"});
+                "gap_water_floor", "gas_collision_after_correction", "collision_wall_limit", "vent_liquid_stop",
+                "collision_passes"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -172,6 +173,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "collision_distance", {0.0, 1.0, false, true}, n.collision_distance);
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
   rd.boolean(nm, np, "collision_wall_limit", n.collision_wall_limit);
+  rd.integer(nm, np, "collision_passes", 1, 10, "[1, 10]", n.collision_passes);
   rd.boolean(nm, np, "vent_liquid_stop", n.vent_liquid_stop);
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)
     n.pressure_source = s == 0 ? PressureSource::Standard : PressureSource::Mixed;

@@ -479,7 +479,8 @@ CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
   for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
   const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
                              config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
-  return resolveCollisions<D>(p.position, p.velocity, p.kind, mass, near_neighbours_, model, dt, affects);
+  return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,
+                                   near_neighbours_, model, dt, affects);
 }
 
 // numerics.gas_collision_after_correction: the collision model once more, after the gas system's correction, for gas
