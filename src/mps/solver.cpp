@@ -438,9 +438,13 @@ void MpsSolver<D>::predict(double dt) {
   // The liquid's viscous term ignores the gas; the gas sees liquid and walls as walls moving with their velocity.
   auto active = [&](std::int32_t j) { return isActive(p.kind[j]); };
   auto notGas = [&](std::int32_t j) { return isActive(p.kind[j]) && !isGas(p.kind[j], p.phase[j]); };
+  // A bubble's gas that follows the liquid (bubble_gas_motion not "own_pressure") takes its velocity from the
+  // extension (bubble_gas_motion.hpp) and feels no pressure of its own, so it must feel no gravity either: the
+  // extension's sweeps start from the gas's own velocity, and an interior that kept g dt each step sank the bubble.
+  const bool gas_follows = config_.numerics.bubble_gas_motion != NumericsConfig::BubbleGasMotion::OwnPressure;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
+    if (p.kind[i] != ParticleKind::Fluid || (gas_follows && roles_.enclosed_gas[i])) continue;
     const double nu = phases_[static_cast<int>(p.phase[i])].kinematic_viscosity;
     acceleration[i] = gravity_;
     if (nu <= 0.0) continue;
