@@ -1,12 +1,14 @@
 // Tests of output/restart I/O: VTK frames, .pvd collection, diagnostics CSV, checkpoints, progress reporting.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 #include "cli/progress.hpp"
 #include "io/bubble_log.hpp"
@@ -466,6 +468,34 @@ TEST(Progress, ResumeStartsAtNextMark) {
   EXPECT_NE(std::string::npos, out.str().find("(61%)"));
   // Sim rate since start: 0.06 s per 2 wall-s, 0.39 left -> 13 s.
   EXPECT_NE(std::string::npos, out.str().find("ETA 0:13"));
+}
+
+// A long run's log shows it is alive between its 10 % marks: a line once kPlainLineGapSeconds of wall time have
+// passed since the last line, the marks still at every 10 %.
+TEST(Progress, PlainModePrintsALineAfterALongGap) {
+  std::ostringstream out;
+  double now = 0.0;
+  ProgressReporter r(1.0, 0.0, out, ProgressMode::Plain, [&now] { return now; });
+  auto lines = [&out] {
+    const std::string text = out.str();
+    return std::count(text.begin(), text.end(), '\n');
+  };
+  const double step_wall = kPlainLineGapSeconds / 4.0;  // 10 % of the run (10 steps) takes 2.5 gaps of wall time
+  std::vector<std::int64_t> printed_at;
+  for (int step = 1; step <= 100; ++step) {
+    now = step * step_wall;
+    const auto before = lines();
+    r.update(step * 0.01, step, 0.01);
+    if (lines() != before) printed_at.push_back(step);
+  }
+  // At each 10 % mark (every 10 steps) and a gap (4 steps) after the last line: 4, 8, 10, 14, 18, 20, 24, ...
+  std::vector<std::int64_t> expected;
+  std::int64_t last = 0;
+  for (int step = 1; step <= 100; ++step)
+    if (step % 10 == 0 || step - last >= 4) expected.push_back(step), last = step;
+  EXPECT_EQ(expected, printed_at);
+  EXPECT_EQ(30u, expected.size());
+  EXPECT_NE(std::string::npos, out.str().find("(4%)"));  // a gap's line, before the first mark
 }
 
 TEST(Progress, TerminalModeThrottlesAndLogsCleanly) {

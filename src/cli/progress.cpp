@@ -102,6 +102,7 @@ ProgressReporter::ProgressReporter(double end_time, double start_time, std::ostr
       sim_time_(start_time) {
   const double f = end_time > 0.0 ? start_time / end_time : 1.0;
   next_decile_ = static_cast<int>(std::floor(f * 10.0 + 1e-9)) + 1;
+  last_line_ = t0_;
 }
 
 ProgressSnapshot ProgressReporter::snapshot(double now) const {
@@ -154,8 +155,10 @@ void ProgressReporter::update(double sim_time, std::int64_t step, double dt) {
     return;
   }
   const double f = end_time_ > 0.0 ? sim_time / end_time_ : 1.0;
-  if (f * 10.0 + 1e-9 >= next_decile_) {
-    next_decile_ = static_cast<int>(std::floor(f * 10.0 + 1e-9)) + 1;
+  const bool mark = f * 10.0 + 1e-9 >= next_decile_;
+  if (mark || now - last_line_ >= kPlainLineGapSeconds) {
+    if (mark) next_decile_ = static_cast<int>(std::floor(f * 10.0 + 1e-9)) + 1;
+    last_line_ = now;
     out_ << formatPlainLine(snapshot(now)) << '\n';
     out_.flush();
   }

@@ -1,4 +1,5 @@
-// Progress reporting on stderr: a redrawn bar on a terminal, one log line per 10% of simulated time otherwise.
+// Progress reporting on stderr: a redrawn bar on a terminal; otherwise one log line per 10% of simulated time, and
+// one whenever kPlainLineGapSeconds of wall time have passed since the last (a long run's log shows it is alive).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,8 @@ namespace mistfall {
 enum class ProgressMode { Auto, Terminal, Plain };  // Auto: Terminal iff out is std::cerr and stderr is a tty
 
 using ProgressClock = std::function<double()>;  // monotonic wall-clock seconds (injectable for tests)
+
+inline constexpr double kPlainLineGapSeconds = 120.0;  // plain mode: the longest wall time between two lines
 
 // Everything one progress line shows; NaN rates/ETA mean "not known yet".
 struct ProgressSnapshot {
@@ -68,6 +71,7 @@ class ProgressReporter {
   double sim_time_ = 0.0, dt_ = 0.0;
   std::int64_t step_ = 0;
   int next_decile_ = 1;             // plain mode: next 10% mark to report
+  double last_line_;                // plain mode: wall clock of the last line (construction before the first)
   std::size_t last_len_ = 0;        // length of the bar currently on screen
   const char* count_unit_ = nullptr;
 };
