@@ -74,6 +74,7 @@ def load_case_doc(run_dir):
 
 def read_overfall_case(run_dir, bed_region, pool_y):
     doc = load_case_doc(run_dir)
+    path = os.path.join(run_dir, "case.toml")
     if doc.get("case", {}).get("dimension", 2) != 2:
         raise PlotError("overfall_profile measures 2D runs only")
     spacing = doc.get("numerics", {}).get("particle_spacing")

@@ -84,3 +84,4 @@ PY
 /usr/bin/python3 "$tools_dir/air_flow_pattern.py" "$out/waterfall_small" --from 2 | tail -n 5 || true
 /usr/bin/python3 "$tools_dir/aeration_depth.py" "$out/waterfall_small" --from 2 | grep -E "^air under|^jet  *measured" || true
 /usr/bin/python3 "$tools_dir/pool_air.py" "$out/waterfall_small" --from 2 | tail -n 3 || true   # the pool's packing: ~0.97 full
+/usr/bin/python3 "$tools_dir/water_in_walls.py" "$out/waterfall_small" | sed -n 2p || true   # none crept into a wall

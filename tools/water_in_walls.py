@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Fluid particles inside the walls of a run: the particles of a frame (water or air, kind fluid) that lie past the
+face of a wall region of the case, in every frame from --from to --to.
+
+A wall in mistfall is a region of wall and dummy particles (case.toml's [[region]] with material = "wall", a box or
+a circle); fluid starts at least l0/2 from its faces, and the pressure and the collision model keep it out. A fluid
+particle past a face has crept into the wall (the loss traced at the pool's corners, docs/waterfall.md): it may stay
+there, at rest among the wall particles, or be thrown out of the domain by its next shift. This tool finds such
+particles in the saved frames, which the particle counts of diagnostics.csv do not show while they stay.
+
+Prints the frames read, the frames holding any fluid particle deeper than --depth in a wall (in l0, default 0.5: as
+deep as the wall's first row of particles; water pressed against a wall sits up to 0.2-0.3 l0 past its face at
+l0 = 1 cm), the most in one frame, and the particles, each with the first frame it was seen in a wall, the
+wall, its phase and its deepest reach (l0). The case file copy RUN_DIR/case.toml gives the walls and l0.
+
+Usage: tools/water_in_walls.py RUN_DIR [--from T] [--to T] [--depth D] [--list N]
+Exits 1 with a one-line message on bad input. Needs Debian's python3-numpy (`make deps`); run it with /usr/bin/python3.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from overfall_profile import frames_between, load_case_doc  # noqa: E402
+from plot_frames import KIND_FLUID, Parser, PlotError, read_vtp  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+PHASES = {0: "water", 1: "air"}
+
+
+def read_walls(run_dir):
+    """[(name, depth_of(x, y))] for the wall regions of RUN_DIR/case.toml (depth_of: the depth past the face, > 0
+    inside, of arrays of coordinates), and l0."""
+    path = os.path.join(run_dir, "case.toml")
+    doc = load_case_doc(run_dir)
+    l0 = doc.get("numerics", {}).get("particle_spacing")
+    if not isinstance(l0, (int, float)) or l0 <= 0:
+        raise PlotError(f"{path}: [numerics] particle_spacing is missing")
+    walls = []
+    for k, region in enumerate(doc.get("region", [])):
+        if region.get("material") != "wall":
+            continue
+        name = region.get("name", f"region {k + 1}")
+        if region.get("shape", "box") == "circle":
+            (cx, cy), r = region["center"][:2], region["radius"]
+            walls.append((name, lambda x, y, cx=cx, cy=cy, r=r: r - np.hypot(x - cx, y - cy)))
+        else:
+            (x0, y0), (x1, y1) = region["min"][:2], region["max"][:2]
+            walls.append((name, lambda x, y, x0=x0, y0=y0, x1=x1, y1=y1:
+                          np.minimum(np.minimum(x - x0, x1 - x), np.minimum(y - y0, y1 - y))))
+    if not walls:
+        raise PlotError(f"{path}: the case has no wall region")
+    return walls, float(l0)
+
+
+def main():
+    ap = Parser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("run_dir", metavar="RUN_DIR")
+    ap.add_argument("--from", dest="t_from", type=float, default=0.0, help="first frame time read (s; default 0)")
+    ap.add_argument("--to", dest="t_to", type=float, default=None, help="last frame time read (s; default: last)")
+    ap.add_argument("--depth", type=float, default=0.5,
+                    help="how far past a wall's face a particle must be to count (l0; default 0.5: as deep as the "
+                         "wall's first row of particles)")
+    ap.add_argument("--list", type=int, default=10, help="particles listed, first seen first (default 10)")
+    args = ap.parse_args()
+    try:
+        if args.depth < 0:
+            raise PlotError(f"--depth {args.depth:g} must be 0 or more")
+        if not os.path.isdir(args.run_dir):
+            raise PlotError(f"{args.run_dir} is not a directory")
+        walls, l0 = read_walls(args.run_dir)
+        chosen = frames_between(args.run_dir, args.t_from, args.t_to)
+        with_any = most = 0
+        first_seen = {}  # particle -> [time, wall, phase, deepest (l0)]
+        for t, path in chosen:
+            a = read_vtp(path)[1]
+            ids = a.get("id")
+            fluid = np.flatnonzero(a["kind"] == KIND_FLUID)
+            x, y = a["Points"][fluid, 0], a["Points"][fluid, 1]
+            counted = np.zeros(fluid.size, dtype=bool)
+            for name, depth_of in walls:
+                depth = depth_of(x, y) / l0
+                for k in np.flatnonzero((depth > args.depth) & ~counted):  # a particle counts in its first wall
+                    i = fluid[k]
+                    key = int(ids[i]) if ids is not None else f"#{i} of frame {t:g}"
+                    seen = first_seen.setdefault(key, [t, name, PHASES.get(int(a["phase"][i]), "?"), depth[k]])
+                    seen[3] = max(seen[3], depth[k])
+                counted |= depth > args.depth
+            with_any += bool(counted.any())
+            most = max(most, int(counted.sum()))
+    except PlotError as e:
+        print(f"water_in_walls: {e}", file=sys.stderr)
+        sys.exit(1)
+    print(f"frames {len(chosen)} (t = {chosen[0][0]:.3f} .. {chosen[-1][0]:.3f} s), walls {len(walls)}, l0 = {l0:g} m; counted: fluid particles more than {args.depth:g} l0 "
+          f"past a wall's face")
+    print(f"frames with fluid in a wall  {with_any} (most in one frame: {most}); particles {len(first_seen)}")
+    for key, (t, name, phase, depth) in sorted(first_seen.items(), key=lambda kv: kv[1][0])[:args.list]:
+        print(f"  particle {key}: {phase}, first in a wall at t = {t:g} s, in '{name}', deepest {depth:.2f} l0")
+
+
+if __name__ == "__main__":
+    main()
