@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from overfall_profile import add_window_arguments, frames_between, load_case_doc  # noqa: E402
+from overfall_profile import add_window_arguments, case_spacing, frames_between, load_case_doc  # noqa: E402
 from plot_frames import KIND_FLUID, PHASE_GAS, PHASE_LIQUID, Parser, PlotError, read_vtp  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -35,9 +35,7 @@ def read_bubble_case(run_dir):
     path = os.path.join(run_dir, "case.toml")
     doc = load_case_doc(run_dir)
     numerics = doc.get("numerics", {})
-    spacing = numerics.get("particle_spacing")
-    if not isinstance(spacing, (int, float)) or spacing <= 0:
-        raise PlotError(f"{path}: [numerics] particle_spacing is missing")
+    spacing = case_spacing(doc, run_dir)
     if doc.get("case", {}).get("dimension", 2) != 2:
         raise PlotError(f"{path}: bubble_pressure_gap measures 2D runs only")
     link = float(numerics.get("gas_region_link", 0.0) or 0.0)

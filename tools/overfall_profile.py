@@ -72,14 +72,21 @@ def load_case_doc(run_dir):
         raise PlotError(f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
 
 
+def case_spacing(doc, run_dir):
+    """[numerics] particle_spacing of a parsed RUN_DIR/case.toml; PlotError when it is missing (shared with
+    bubble_pressure_gap.py and water_in_walls.py)."""
+    spacing = doc.get("numerics", {}).get("particle_spacing")
+    if not isinstance(spacing, (int, float)) or spacing <= 0:
+        raise PlotError(f"{os.path.join(run_dir, 'case.toml')}: [numerics] particle_spacing is missing")
+    return float(spacing)
+
+
 def read_overfall_case(run_dir, bed_region, pool_y):
     doc = load_case_doc(run_dir)
     path = os.path.join(run_dir, "case.toml")
     if doc.get("case", {}).get("dimension", 2) != 2:
         raise PlotError("overfall_profile measures 2D runs only")
-    spacing = doc.get("numerics", {}).get("particle_spacing")
-    if not isinstance(spacing, (int, float)) or spacing <= 0:
-        raise PlotError(f"{path}: [numerics] particle_spacing is missing")
+    spacing = case_spacing(doc, run_dir)
     gravity = doc.get("physics", {}).get("gravity", [0.0, -9.81])
     q = sum(float(inflow.get("discharge", 0.0)) for inflow in doc.get("inflow", []))
     if q <= 0:

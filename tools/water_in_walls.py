@@ -20,22 +20,19 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from overfall_profile import frames_between, load_case_doc  # noqa: E402
-from plot_frames import KIND_FLUID, Parser, PlotError, read_vtp  # noqa: E402
+from overfall_profile import case_spacing, frames_between, load_case_doc  # noqa: E402
+from plot_frames import KIND_FLUID, PHASE_GAS, PHASE_LIQUID, Parser, PlotError, read_vtp  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-PHASES = {0: "water", 1: "air"}
+PHASES = {PHASE_LIQUID: "water", PHASE_GAS: "air"}
 
 
 def read_walls(run_dir):
     """[(name, depth_of(x, y))] for the wall regions of RUN_DIR/case.toml (depth_of: the depth past the face, > 0
     inside, of arrays of coordinates), and l0."""
-    path = os.path.join(run_dir, "case.toml")
     doc = load_case_doc(run_dir)
-    l0 = doc.get("numerics", {}).get("particle_spacing")
-    if not isinstance(l0, (int, float)) or l0 <= 0:
-        raise PlotError(f"{path}: [numerics] particle_spacing is missing")
+    l0 = case_spacing(doc, run_dir)
     walls = []
     for k, region in enumerate(doc.get("region", [])):
         if region.get("material") != "wall":
@@ -49,8 +46,8 @@ def read_walls(run_dir):
             walls.append((name, lambda x, y, x0=x0, y0=y0, x1=x1, y1=y1:
                           np.minimum(np.minimum(x - x0, x1 - x), np.minimum(y - y0, y1 - y))))
     if not walls:
-        raise PlotError(f"{path}: the case has no wall region")
-    return walls, float(l0)
+        raise PlotError(f"{os.path.join(run_dir, 'case.toml')}: the case has no wall region")
+    return walls, l0
 
 
 def main():
@@ -80,19 +77,20 @@ def main():
             counted = np.zeros(fluid.size, dtype=bool)
             for name, depth_of in walls:
                 depth = depth_of(x, y) / l0
-                for k in np.flatnonzero((depth > args.depth) & ~counted):  # a particle counts in its first wall
+                inside = depth > args.depth
+                for k in np.flatnonzero(inside & ~counted):  # a particle counts in its first wall
                     i = fluid[k]
                     key = int(ids[i]) if ids is not None else f"#{i} of frame {t:g}"
                     seen = first_seen.setdefault(key, [t, name, PHASES.get(int(a["phase"][i]), "?"), depth[k]])
                     seen[3] = max(seen[3], depth[k])
-                counted |= depth > args.depth
+                counted |= inside
             with_any += bool(counted.any())
             most = max(most, int(counted.sum()))
     except PlotError as e:
         print(f"water_in_walls: {e}", file=sys.stderr)
         sys.exit(1)
-    print(f"frames {len(chosen)} (t = {chosen[0][0]:.3f} .. {chosen[-1][0]:.3f} s), walls {len(walls)}, l0 = {l0:g} m; counted: fluid particles more than {args.depth:g} l0 "
-          f"past a wall's face")
+    print(f"frames {len(chosen)} (t = {chosen[0][0]:.3f} .. {chosen[-1][0]:.3f} s), walls {len(walls)}, l0 = {l0:g} m; "
+          f"counted: fluid particles more than {args.depth:g} l0 past a wall's face")
     print(f"frames with fluid in a wall  {with_any} (most in one frame: {most}); particles {len(first_seen)}")
     for key, (t, name, phase, depth) in sorted(first_seen.items(), key=lambda kv: kv[1][0])[:args.list]:
         print(f"  particle {key}: {phase}, first in a wall at t = {t:g} s, in '{name}', deepest {depth:.2f} l0")
