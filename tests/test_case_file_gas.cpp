@@ -246,15 +246,17 @@ TEST(CaseFileGas, BubbleGasKeys) {
   EXPECT_TRUE(d.numerics.bubble_start_at_water_pressure);
   EXPECT_FALSE(d.numerics.bubble_divergence_whole);
   EXPECT_FALSE(d.numerics.gas_collision_after_correction);
+  EXPECT_FALSE(d.numerics.liquid_collision_after_correction);
   Parts p;
   p.numerics += "bubble_gas_motion = \"own_pressure\"\nbubble_regularisation = 0\ngas_pressure_memory = true\n"
-                "gas_collision_after_correction = true\n";
+                "gas_collision_after_correction = true\nliquid_collision_after_correction = true\n";
   const CaseConfig c = parseCase(p.text(), "t.toml");
   EXPECT_EQ(c.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::OwnPressure);
   EXPECT_DOUBLE_EQ(c.numerics.bubble_regularisation, 0.0);
   EXPECT_TRUE(c.numerics.gas_pressure_memory);
   EXPECT_TRUE(c.numerics.gas_pressure_memory_open);
   EXPECT_TRUE(c.numerics.gas_collision_after_correction);
+  EXPECT_TRUE(c.numerics.liquid_collision_after_correction);
   p = Parts{};
   p.numerics += "gas_pressure_memory = \"bubbles\"\n";  // the bubbles' rows only
   const CaseConfig b = parseCase(p.text(), "t.toml");

@@ -31,23 +31,12 @@ struct StillTank {
 
 // Water of `width` x `depth` in the shipped tank's construction (4-layer walls, 6 layers of air gap), spacing l0.
 CaseConfig tankCase(const StillTank& t) {
-  CaseConfig c = test_support::loadShippedCase("hydrostatic.toml");
+  CaseConfig c = t.particle_spacing > 0.0 ? test_support::stillTankCase(t.particle_spacing, t.width, t.depth)
+                                          : test_support::loadShippedCase("hydrostatic.toml");
   c.numerics.scheme = t.scheme;
   if (t.scheme == Scheme::Paper) {  // the paper's MPS as the shipped case ran it before the stabilised scheme
     c.numerics.source_relaxation = 0.01;
     c.numerics.collision_distance = 0.5;
-  }
-  if (t.particle_spacing > 0.0) {
-    const double l0 = t.particle_spacing, wall = 4 * l0, top = t.depth + 6 * l0;
-    c.numerics.particle_spacing = l0;
-    c.domain.min = {-wall, -wall, 0.0};
-    c.domain.max = {t.width + wall, top + 4 * l0, 0.0};
-    for (auto& r : c.regions) {
-      if (r.name == "water") r.box.max = {t.width, t.depth, 0.0};
-      if (r.name == "wall_bottom") r.box = {{-wall, -wall, 0.0}, {t.width + wall, 0.0, 0.0}};
-      if (r.name == "wall_left") r.box = {{-wall, -wall, 0.0}, {0.0, top, 0.0}};
-      if (r.name == "wall_right") r.box = {{t.width, -wall, 0.0}, {t.width + wall, top, 0.0}};
-    }
   }
   return c;
 }

@@ -222,6 +222,12 @@ struct NumericsConfig {
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.
   bool gas_collision_after_correction = false;
+  // The collision model once more after the liquid correction, on liquid approaching a wall or dummy particle (the
+  // water takes the whole reversal). The correction can leave a particle in a corner moving into the walls: the
+  // mirrored walls hold its own pressure, so nothing in the next step's pressure pushes it back, and the collision
+  // before the correction turns it round only for the correction to turn it in again (traced at 5 mm: a particle crept
+  // into the floor/weir corner over 30 ms and was lost, docs/waterfall.md). Counted in `collisions`.
+  bool liquid_collision_after_correction = false;
   // coupling = "one_equation" (experimental): water short of neighbours (n* < surface_threshold n0) next to air holds
   // at least the air's pressure there (gap_water_floor.hpp: the gap is unresolved air, which cannot pull on the water;
   // without it the water going over a brink clings to the bed's face). A guard, counted (gap_water_floors).

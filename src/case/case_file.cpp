@@ -145,8 +145,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
                 "bubble_initial_pressure", "bubble_divergence",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
-                "gap_water_floor", "gas_collision_after_correction", "collision_wall_limit", "vent_liquid_stop",
-                "collision_passes"});
+                "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
+                "collision_wall_limit", "vent_liquid_stop", "collision_passes"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -214,6 +214,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (int s = rd.choice(nm, np, "bubble_divergence", {"interface", "whole_bubble"}); s >= 0)
     n.bubble_divergence_whole = s == 1;
   rd.boolean(nm, np, "gas_collision_after_correction", n.gas_collision_after_correction);
+  rd.boolean(nm, np, "liquid_collision_after_correction", n.liquid_collision_after_correction);
   if (int s = rd.choice(nm, np, "gas_operators", {"paper", "stabilised"}); s >= 0) n.gas_stabilised = s == 1;
   if (int s = rd.choice(nm, np, "vent_outlet", {"buffer", "zero_gradient"}); s >= 0) n.vent_zero_gradient = s == 1;
   if (n.gas_stabilised && n.pressure_source != PressureSource::Mixed)

@@ -114,6 +114,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::collision_wall_limits>("collision_wall_limits"),
     column<&DiagnosticsRow::vent_liquid_stops>("vent_liquid_stops"),
     column<&DiagnosticsRow::neighbour_surfaces>("neighbour_surfaces"),
+    column<&DiagnosticsRow::liquid_wall_collisions>("liquid_wall_collisions"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -86,6 +86,9 @@ struct DiagnosticsRow {
   // surface_asymmetry made free surface (p = 0) since the previous row (particle-solves, every pressure system;
   // thresholds, not physics).
   std::int64_t neighbour_surfaces = 0;
+  // Water-wall pairs reversed by numerics.liquid_collision_after_correction since the previous row (pair-steps; a
+  // guard, apart from `collisions`).
+  std::int64_t liquid_wall_collisions = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -89,6 +89,7 @@ struct StepReport {
   // Numerical guards of the liquid (counted, reported per output row in diagnostics.csv):
   std::size_t collisions = 0;          // approaching pairs closer than numerics.collision_distance, reversed
   std::size_t collision_wall_limits = 0;  // velocities kept from approaching a wall by numerics.collision_wall_limit
+  std::size_t liquid_wall_collisions = 0;  // water-wall pairs reversed by numerics.liquid_collision_after_correction
   // fluid particles dense enough (n >= beta n0) made free surface (p = 0) by numerics.surface_neighbour_fraction or
   // surface_asymmetry alone, in every system of the step
   std::size_t neighbour_surfaces = 0;
@@ -145,6 +146,7 @@ class MpsSolver {
   void predict(double dt);
   void collide(double dt);
   void collideCorrectedGas(double dt);
+  void collideCorrectedLiquid(double dt);
   template <class Affects>
   CollisionCount collideWhere(double dt, Affects&& affects);
   void findBubbles();
@@ -175,6 +177,10 @@ class MpsSolver {
   }
   // numerics.coupling = "one_equation" (solver_one_equation.cpp): both phases in one variable-density projection
   bool oneEquation() const { return config_.numerics.coupling == NumericsConfig::Coupling::OneEquation; }
+  // A bubble's gas moved with the liquid's velocity (bubble_gas_motion.hpp), not by a pressure of its own.
+  bool bubbleGasFollowsLiquid() const {
+    return config_.numerics.bubble_gas_motion != NumericsConfig::BubbleGasMotion::OwnPressure;
+  }
   void solveOneEquationPressure(double dt);
   void correctOneEquation(double dt);
   CorrectedGradient<D> oneEquationGradient(std::size_t i, bool repulsive = false) const;

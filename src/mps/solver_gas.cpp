@@ -207,7 +207,7 @@ void MpsSolver<D>::correctGas(double dt) {
   report_.gas_corrections_capped = capped;
   report_.gas_correction_cuts = correction_cuts;
   report_.gas_speed_cuts = speed_cuts;
-  const bool own_pressure = config_.numerics.bubble_gas_motion == NumericsConfig::BubbleGasMotion::OwnPressure;
+  const bool own_pressure = !bubbleGasFollowsLiquid();
   // numerics.shift_wall_stop (a guard, counted): a bubble gas's re-spacing, a move without a velocity that the
   // collision model cannot see, does not approach a wall particle it would bring within collision_distance
   // (wall_stop.hpp; only fixed particles are read, so the loop may move the gas as it goes).
@@ -310,7 +310,7 @@ void MpsSolver<D>::removeReleasedPoints() {
 template <int D>
 void MpsSolver<D>::moveBubbleGas(double dt) {
   using Motion = NumericsConfig::BubbleGasMotion;
-  if (config_.numerics.bubble_gas_motion == Motion::OwnPressure) return;
+  if (!bubbleGasFollowsLiquid()) return;
   const double re = constants_.re_number_density;
   if (config_.numerics.bubble_gas_motion == Motion::FollowVoid) {
     const auto translation =

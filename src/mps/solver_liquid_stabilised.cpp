@@ -86,7 +86,7 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
   // (bubble_gas_motion.hpp), not a flow the water must follow; the bubble's volume is its own row's
   // (bubble_pressure.hpp). Counted, it held the water beside a bubble to that velocity, and a water particle
   // crossing a bubble's gas at 2-3 m/s reached 30-140 kPa (the 5 mm waterfall at 1.07 and 1.19 s, docs/waterfall.md).
-  const bool gas_follows = config_.numerics.bubble_gas_motion != NumericsConfig::BubbleGasMotion::OwnPressure;
+  const bool gas_follows = bubbleGasFollowsLiquid();
   for (std::int64_t i = 0; i < n; ++i)
     if (isMirroredWall(p.kind[i]) || (gas_follows && roles_.enclosed_gas[i])) problem_.carries_velocity[i] = 0;
   std::vector<Vec<D>> last_gradient(n, Vec<D>::Zero());

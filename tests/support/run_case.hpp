@@ -15,6 +15,23 @@ inline CaseConfig loadShippedCase(const std::string& name) {
   return loadCaseFile(std::string(MISTFALL_SOURCE_DIR) + "/cases/" + name);
 }
 
+// The shipped still tank (cases/hydrostatic.toml) at spacing l0 with water of `width` x `depth` [m]: its
+// construction kept (walls 4 layers thick, 6 layers of air gap above the water).
+inline CaseConfig stillTankCase(double l0, double width, double depth) {
+  CaseConfig c = loadShippedCase("hydrostatic.toml");
+  const double wall = 4 * l0, top = depth + 6 * l0;
+  c.numerics.particle_spacing = l0;
+  c.domain.min = {-wall, -wall, 0.0};
+  c.domain.max = {width + wall, top + 4 * l0, 0.0};
+  for (auto& r : c.regions) {
+    if (r.name == "water") r.box.max = {width, depth, 0.0};
+    if (r.name == "wall_bottom") r.box = {{-wall, -wall, 0.0}, {width + wall, 0.0, 0.0}};
+    if (r.name == "wall_left") r.box = {{-wall, -wall, 0.0}, {0.0, top, 0.0}};
+    if (r.name == "wall_right") r.box = {{width, -wall, 0.0}, {width + wall, top, 0.0}};
+  }
+  return c;
+}
+
 // A case parsed from text, its particles built and a solver over them, ready to step (solver->step(until)).
 template <int D>
 struct SolverRun {
