@@ -3,19 +3,24 @@
 face of a wall region of the case, in every frame from --from to --to.
 
 A wall in mistfall is a region of wall and dummy particles (case.toml's [[region]] with material = "wall", a box or
-a circle); fluid starts at least l0/2 from its faces, and the pressure and the collision model keep it out. A fluid
+a circle); fluid starts at least l0/2 from its faces, and the pressure and the collision model keep it out. A box
+wall's face is taken half a spacing beyond its outermost row of particles (the lattice of [domain] min, points at
+min + (k + 1/2) l0, a box holding those from its min up to below its max): the box's edge where the lattice is
+aligned with it, as in the shipped 5 mm case, but half a spacing inside it where a lattice row falls on the edge,
+as in the 1 cm case's channel bed (bed to y = 0.435 m, its top row at 0.425, the water's bottom row at 0.435). A
 particle past a face has crept into the wall (the loss traced at the pool's corners, docs/waterfall.md): it may stay
 there, at rest among the wall particles, or be thrown out of the domain by its next shift. This tool finds such
 particles in the saved frames, which the particle counts of diagnostics.csv do not show while they stay.
 
 Prints the frames read, the frames holding any fluid particle deeper than --depth in a wall (in l0, default 0.5: as
-deep as the wall's first row of particles; water pressed against a wall sits up to 0.2-0.3 l0 past its face at
-l0 = 1 cm), the most in one frame, and the particles, each with the first frame it was seen in a wall, the
-wall, its phase and its deepest reach (l0). The case file copy RUN_DIR/case.toml gives the walls and l0.
+deep as the wall's first row of particles), the most in one frame, and the particles, each with the first frame it
+was seen in a wall, the wall, its phase and its deepest reach (l0). The case file copy RUN_DIR/case.toml gives the
+walls, the lattice's origin ([domain] min) and l0.
 
 Usage: tools/water_in_walls.py RUN_DIR [--from T] [--to T] [--depth D] [--list N]
 Exits 1 with a one-line message on bad input. Needs Debian's python3-numpy (`make deps`); run it with /usr/bin/python3.
 """
+import math
 import os
 import sys
 
@@ -28,11 +33,20 @@ import numpy as np  # noqa: E402
 PHASES = {PHASE_LIQUID: "water", PHASE_GAS: "air"}
 
 
+def lattice_face(edge, origin, l0):
+    """Where the particles of a box with this edge stop, half a spacing past the last lattice point below the edge:
+    origin + i l0 for the smallest i >= 0 with origin + (i + 1/2) l0 at or past the edge (src/case/scene.cpp)."""
+    return origin + max(0, math.ceil((edge - origin) / l0 - 0.5 - 1e-9)) * l0
+
+
 def read_walls(run_dir):
     """[(name, depth_of(x, y))] for the wall regions of RUN_DIR/case.toml (depth_of: the depth past the face, > 0
     inside, of arrays of coordinates), and l0."""
     doc = load_case_doc(run_dir)
     l0 = case_spacing(doc, run_dir)
+    origin = doc.get("domain", {}).get("min")
+    if not isinstance(origin, list) or len(origin) < 2:
+        raise PlotError(f"{os.path.join(run_dir, 'case.toml')}: [domain] min is missing (the lattice's origin)")
     walls = []
     for k, region in enumerate(doc.get("region", [])):
         if region.get("material") != "wall":
@@ -43,6 +57,8 @@ def read_walls(run_dir):
             walls.append((name, lambda x, y, cx=cx, cy=cy, r=r: r - np.hypot(x - cx, y - cy)))
         else:
             (x0, y0), (x1, y1) = region["min"][:2], region["max"][:2]
+            x0, x1 = (lattice_face(e, origin[0], l0) for e in (x0, x1))
+            y0, y1 = (lattice_face(e, origin[1], l0) for e in (y0, y1))
             walls.append((name, lambda x, y, x0=x0, y0=y0, x1=x1, y1=y1:
                           np.minimum(np.minimum(x - x0, x1 - x), np.minimum(y - y0, y1 - y))))
     if not walls:

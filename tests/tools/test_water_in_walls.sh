@@ -32,6 +32,9 @@ write_frames(run, [0.0, 1.0, 2.0], frames, [[(0.0, 0.0)] * len(f) for f in frame
 with open(os.path.join(run, "case.toml"), "w") as f:
     f.write("""[case]
 name = "hand"
+[domain]
+min = [-0.2, -0.2]
+max = [2.0, 1.0]
 [numerics]
 particle_spacing = 0.1
 [[region]]
@@ -77,6 +80,17 @@ out=$("$py" "$tool" "$run" --from 1.5 --list 1)
 expect_line "$out" "^frames 1 (t = 2.000 .. 2.000 s)"
 expect_line "$out" "^frames with fluid in a wall  1 (most in one frame: 3); particles 3$"
 [ "$(grep -c "^  particle" <<<"$out")" = 1 ] || { echo "FAIL: --list 1" >&2; exit 1; }
+# The lattice shifted by half a spacing (points at -0.2 + 0.1 k): a row falls on the floor's face y = 0, which the
+# floor's particles stop below (its top row at y = -0.1), so its face is y = -0.05: water 5 at y = -0.03 is outside
+# it and water 9 (y = -0.07) 0.2 l0 inside; the weir's faces move to x = 0.95 and 1.15 (water 7 at x = 1.03, then
+# 1.08: 0.8, then 0.7 l0).
+cp -r "$run" "$work/shifted"
+sed -i 's/^min = \[-0.2, -0.2\]$/min = [-0.25, -0.25]/' "$work/shifted/case.toml"
+out=$("$py" "$tool" "$work/shifted" --depth 0.1)
+echo "$out"
+expect_line "$out" "^  particle 9: water, first in a wall at t = 2 s, in 'floor', deepest 0.20 l0$"
+expect_line "$out" "^  particle 7: water, first in a wall at t = 1 s, in 'weir', deepest 0.80 l0$"
+! grep -q "^  particle 5:" <<<"$out" || { echo "FAIL: water 5 counted on the shifted lattice" >&2; exit 1; }
 "$py" "$tool" --help | grep -q "first row of particles" || { echo "FAIL: --help" >&2; exit 1; }
 
 source "$(dirname "${BASH_SOURCE[0]}")/expect_fail.sh"
@@ -88,4 +102,7 @@ expect_fail "no frame between t = 5" "$run" --from 5
 cp -r "$run" "$work/no_walls"
 sed -i 's/material = "wall"/material = "water"/' "$work/no_walls/case.toml"
 expect_fail "has no wall region" "$work/no_walls"
+cp -r "$run" "$work/no_domain"
+sed -i '/^\[domain\]$/,/^max = /d' "$work/no_domain/case.toml"
+expect_fail "\\[domain\\] min is missing" "$work/no_domain"
 echo "water_in_walls: ok"
