@@ -78,7 +78,8 @@ total = lambda k: sum(float(r[k]) for r in rows)
 print(f"t = {float(last['time']):.2f} s, {last['step']} steps; escaped {last['escaped']}; guards over the run: "
       f"collisions {total('collisions'):.0f}, gas_correction_capped {total('gas_correction_capped'):.0f}, "
       f"gas_speed_capped {total('gas_speed_capped'):.0f}, dispersed_gas {total('dispersed_gas'):.0f}, "
-      f"entrained_swaps {total('entrained_swaps'):.0f}, points_unpaired {total('points_unpaired'):.0f}")
+      f"entrained_swaps {total('entrained_swaps'):.0f}, points_unpaired {total('points_unpaired'):.0f}, "
+      f"shift_cuts {total('shift_cuts'):.0f}, liquid_wall_collisions {total('liquid_wall_collisions'):.0f}")
 PY
 /usr/bin/python3 "$tools_dir/overfall_profile.py" "$out/waterfall_small" --from 2 | grep -E "last l0|^nappe" || true
 /usr/bin/python3 "$tools_dir/air_flow_pattern.py" "$out/waterfall_small" --from 2 | tail -n 5 || true
