@@ -33,11 +33,14 @@ CornerRun runCorner(bool key, double inset, double end) {
   std::size_t corner = p.size();
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == ParticleKind::Fluid && (p.position[i] - Vec<2>(0.5 * l0, 0.5 * l0)).norm() < 1e-9) corner = i;
-  EXPECT_LT(corner, p.size());
+  CornerRun run;
+  if (corner == p.size()) {
+    ADD_FAILURE() << "no fluid particle at the tank's corner place";
+    return run;
+  }
   const auto id = p.id[corner];
   p.position[corner] *= 1.0 - inset;
   MpsSolver<2> solver(c, state);
-  CornerRun run;
   while (state.time < end - 1e-12) {
     run.reversals += solver.step(end).liquid_wall_collisions;
     for (std::size_t i = 0; i < p.size(); ++i)

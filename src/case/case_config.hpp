@@ -226,7 +226,8 @@ struct NumericsConfig {
   // water takes the whole reversal). The correction can leave a particle in a corner moving into the walls: the
   // mirrored walls hold its own pressure, so nothing in the next step's pressure pushes it back, and the collision
   // before the correction turns it round only for the correction to turn it in again (traced at 5 mm: a particle crept
-  // into the floor/weir corner over 30 ms and was lost, docs/waterfall.md). Counted in `collisions`.
+  // into the floor/weir corner over 30 ms and was lost, docs/waterfall.md). Counted apart from `collisions`, in
+  // `liquid_wall_collisions`.
   bool liquid_collision_after_correction = false;
   // coupling = "one_equation" (experimental): water short of neighbours (n* < surface_threshold n0) next to air holds
   // at least the air's pressure there (gap_water_floor.hpp: the gap is unresolved air, which cannot pull on the water;
