@@ -318,3 +318,50 @@ TEST(EntrainedBubbles, PointsInAnAirPocketGiveTheirVolumeBackAtItsEdge) {
   }
   for (std::size_t k = first; k < p.size(); ++k) EXPECT_EQ(p.kind[k], ParticleKind::Point);  // removed by the solver
 }
+
+// Points that meet coalesce (entrained_bubbles.hpp): twenty points at one place deep in still water (the stack that
+// blew up cases/waterfall.toml at 5.388 s) keep one point; the other nineteen give their gas back to the lattice, each
+// to its own water particle, the nearest first, so the gas is a cluster the lattice resolves. A point 2 l0 away is
+// left alone, and a gas particle within l0/2 of the kept point stays in the lattice, while one away from every
+// point leaves it.
+TEST(EntrainedBubbles, PointsThatMeetCoalesceIntoTheLattice) {
+  const double l0 = 0.005, re = 2.1 * l0, dt = 5e-4;
+  const EntrainedBubbleModel model = airInWater(0.005);
+  Particles<2> p;
+  for (int i = -10; i <= 10; ++i)
+    for (int j = -10; j <= 10; ++j) p.add(Vec<2>(i * l0, j * l0), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
+  const std::size_t near_gas = 10 * 21 + 10, far_gas = 3 * 21 + 3;  // (0, 0) and (-7 l0, -7 l0)
+  p.phase[near_gas] = p.phase[far_gas] = Phase::Gas;
+  std::vector<char> candidate(p.size(), 0);
+  candidate[near_gas] = candidate[far_gas] = 1;
+  const std::size_t first = p.size();
+  const Vec<2> stack(0.3 * l0, 0.2 * l0), apart(0.3 * l0 + 2.0 * l0, 0.2 * l0);
+  for (int k = 0; k < 20; ++k) p.add(stack, Vec<2>(0.0, 0.1), ParticleKind::Point, Phase::Gas);
+  p.add(apart, Vec<2>(0.0, 0.1), ParticleKind::Point, Phase::Gas);
+  candidate.resize(p.size(), 0);
+  const std::vector<Phase> phase_before = p.phase;
+  const MpsConstants c = referenceConstants(2, l0, 2.1, 2.1);
+  EntrainedBubbles<2> points(model, l0, re, c.n0, Vec<2>(0.0, -9.81));
+  std::map<std::uint64_t, Vec<2>> forces;
+  const EntrainedBubbleCounts counts = points.advance(p, p.velocity, candidate, dt, forces);
+  EXPECT_EQ(counts.coalesced, 19u);
+  EXPECT_EQ(counts.released, 0u);  // none reached the surface
+  EXPECT_EQ(counts.unpaired, 0u);
+  ASSERT_EQ(counts.released_ids.size(), 19u);
+  for (std::size_t k = 0; k < counts.released_ids.size(); ++k)
+    EXPECT_EQ(counts.released_ids[k], p.id[first + 1 + k]) << "the first point of the stack is the one kept";
+  std::vector<double> made;  // distances of the water turned into gas from the stack
+  for (std::size_t j = 0; j < first; ++j)
+    if (phase_before[j] == Phase::Liquid && p.phase[j] == Phase::Gas) made.push_back((p.position[j] - stack).norm());
+  ASSERT_EQ(made.size(), 19u);
+  for (double r : made) EXPECT_LT(r, 3.0 * l0) << "gas given back far from the stack";
+  // the nearest water first: nothing left as water is nearer to the stack than the farthest gas made
+  const double farthest = *std::max_element(made.begin(), made.end());
+  for (std::size_t j = 0; j < first; ++j)
+    if (p.phase[j] == Phase::Liquid) EXPECT_GE((p.position[j] - stack).norm(), farthest - 1e-12);
+  EXPECT_EQ(counts.made, 1u);  // the far gas particle left the lattice, the one next to the kept point did not
+  EXPECT_EQ(p.phase[near_gas], Phase::Gas);
+  EXPECT_EQ(p.phase[far_gas], Phase::Liquid);
+  EXPECT_EQ(p.kind.back(), ParticleKind::Point);
+  EXPECT_EQ(p.position.back(), p.position[far_gas]);
+}

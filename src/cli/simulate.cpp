@@ -249,6 +249,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.vent_liquid_stops = std::exchange(guards.vent_liquid_stops, 0);
     row.neighbour_surfaces = std::exchange(guards.neighbour_surfaces, 0);
     row.liquid_wall_collisions = std::exchange(guards.liquid_wall_collisions, 0);
+    row.points_coalesced = std::exchange(guards.points_coalesced, 0);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -307,6 +308,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.vent_liquid_stops += static_cast<std::int64_t>(last.vent_liquid_stops);
         guards.neighbour_surfaces += static_cast<std::int64_t>(last.neighbour_surfaces);
         guards.liquid_wall_collisions += static_cast<std::int64_t>(last.liquid_wall_collisions);
+        guards.points_coalesced += static_cast<std::int64_t>(last.bubble_points_coalesced);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v],
           vent_liquid[v] += last.vented_liquid_by_vent[v];

@@ -115,6 +115,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::vent_liquid_stops>("vent_liquid_stops"),
     column<&DiagnosticsRow::neighbour_surfaces>("neighbour_surfaces"),
     column<&DiagnosticsRow::liquid_wall_collisions>("liquid_wall_collisions"),
+    column<&DiagnosticsRow::points_coalesced>("points_coalesced"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -89,6 +89,9 @@ struct DiagnosticsRow {
   // Water-wall pairs reversed by numerics.liquid_collision_after_correction since the previous row (pair-steps; a
   // guard, apart from `collisions`).
   std::int64_t liquid_wall_collisions = 0;
+  // Points of entrained bubbles that coalesced (came within l0/2 of another and gave their gas back to the lattice;
+  // mps/entrained_bubbles.hpp) since the previous row.
+  std::int64_t points_coalesced = 0;
   // The vents' gas (mps/gas_vent.hpp) since the start (cumulative, particles): created at their outer faces (air
   // drawn in from the ambient) and removed past them (air pushed out).
   std::int64_t vented_in = 0, vented_out = 0;

@@ -76,6 +76,7 @@ struct StepReport {
   // that returned to it at the surface, point steps shortened next to a wall
   std::size_t bubble_points_made = 0, bubble_points_released = 0, bubble_point_wall_stops = 0;
   std::size_t bubble_points_unpaired = 0;  // released points with no water particle to take the volume from
+  std::size_t bubble_points_coalesced = 0;  // points within l0/2 of another that gave their gas back to the lattice
   std::size_t gas_corrections_capped = 0;  // gas corrections cut by gas_correction_limit or gas_speed_limit
   std::size_t gas_correction_cuts = 0;     // ... by gas_correction_limit
   std::size_t gas_speed_cuts = 0;          // ... by gas_speed_limit (a correction may be cut by both)

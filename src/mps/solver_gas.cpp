@@ -287,6 +287,7 @@ void MpsSolver<D>::moveEntrainedBubbles(double dt) {
   report_.bubble_points_released = counts.released;
   report_.bubble_point_wall_stops = counts.wall_stops;
   report_.bubble_points_unpaired = counts.unpaired;
+  report_.bubble_points_coalesced = counts.coalesced;
 }
 
 // The points released at the surface this step leave the arrays (their gas is a surface particle's now), after the
