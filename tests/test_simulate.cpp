@@ -507,6 +507,29 @@ TEST(SimulateDivergence, StopsWithCodeThreeAndKeepsTheFrames) {
   EXPECT_GT(time, ckpt.time);
   EXPECT_EQ("step", step_key);
   EXPECT_GT(step, ckpt.step);
+  // Then the steps before it: consecutive, ending with the one that diverged. The block falls freely out of the
+  // domain, so each step's fastest particle is water at g t.
+  std::string line, header;
+  std::vector<std::vector<std::string>> steps;
+  while (std::getline(record, line)) {
+    if (line.rfind("time,step,dt,id,role,x,y,speed,pressure", 0) == 0) header = line;
+    if (header.empty() || line == header || line.empty()) continue;
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+    ASSERT_EQ(9u, fields.size()) << line;
+    steps.push_back(fields);
+  }
+  ASSERT_FALSE(header.empty()) << "no table of the last steps";
+  ASSERT_FALSE(steps.empty());
+  EXPECT_LE(steps.size(), 200u);
+  for (std::size_t k = 1; k < steps.size(); ++k) EXPECT_EQ(std::stol(steps[k][1]), std::stol(steps[k - 1][1]) + 1);
+  EXPECT_LE(step - std::stol(steps.back()[1]), 1);
+  EXPECT_GE(step - std::stol(steps.back()[1]), 0);
+  for (const auto& s : steps) {
+    EXPECT_EQ("liquid", s[4]);
+    EXPECT_NEAR(9.81 * std::stod(s[0]), std::stod(s[7]), 1e-6 + 1e-3 * 9.81 * std::stod(s[0])) << "t = " << s[0];
+  }
   // Overwriting the run removes the stale record with the rest of the old run.
   auto again = options(case_file, run);
   again.overwrite = true;

@@ -321,7 +321,9 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     // A record of the divergence next to the frames, for the tools (tools/plot_bubble.py) and later stages.
     writeFileAtomically(dir / kDiverged, [&](std::ostream& out) {
       out << std::setprecision(17) << "time = " << e.time() << "\nstep = " << e.step() << "\nreason = " << e.what()
-          << "\n";
+          << "\n\n# The last steps before it (at most " << MpsSolver<D>::kRecentSteps
+          << "): dt and the fastest fluid particle when dt was chosen.\n"
+          << solver.recentStepsCsv();
     });
     std::cerr << "mistfall simulate: frames up to t = " << (state.next_frame - 1) * interval << " s are kept in "
               << dir << "; " << (dir / kDiverged) << " records the divergence\n";

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iomanip>
 #include <sstream>
 #include <string_view>
 
@@ -97,14 +98,21 @@ double MpsSolver<D>::maxFluidSpeed() const {
   return std::max(liquid, gas);
 }
 
-// Which particle is the fastest, for a divergence's message: its id, phase, role and place.
 template <int D>
-std::string MpsSolver<D>::fastestParticle() const {
+std::size_t MpsSolver<D>::fastestFluidIndex() const {
   const auto& p = state_.particles;
   std::size_t fastest = p.size();
   double top = -1.0;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.kind[i] == ParticleKind::Fluid && p.velocity[i].norm() > top) top = p.velocity[i].norm(), fastest = i;
+  return fastest;
+}
+
+// Which particle is the fastest, for a divergence's message: its id, phase, role and place.
+template <int D>
+std::string MpsSolver<D>::fastestParticle() const {
+  const auto& p = state_.particles;
+  const std::size_t fastest = fastestFluidIndex();
   if (fastest == p.size()) return "no fluid particle";
   std::ostringstream out;
   const bool gas = p.phase[fastest] == Phase::Gas;
@@ -112,6 +120,39 @@ std::string MpsSolver<D>::fastestParticle() const {
       << (gas ? (p.enclosed[fastest] ? "gas of an enclosed bubble" : "open gas") : "liquid") << ", at (";
   for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[fastest][d];
   out << ") m, pressure " << p.pressure[fastest] << " Pa";
+  return out.str();
+}
+
+// The step about to be taken, for recentStepsCsv: its dt and the fastest fluid particle now.
+template <int D>
+void MpsSolver<D>::recordStep(double dt) {
+  const auto& p = state_.particles;
+  RecentStep r;
+  r.time = state_.time;
+  r.step = state_.step;
+  r.dt = dt;
+  if (const std::size_t i = fastestFluidIndex(); i < p.size()) {
+    r.id = p.id[i];
+    r.role = p.phase[i] != Phase::Gas ? "liquid" : (p.enclosed[i] ? "bubble gas" : "open gas");
+    r.position = p.position[i];
+    r.speed = p.velocity[i].norm();
+    r.pressure = p.pressure[i];
+  }
+  if (recent_steps_.size() == kRecentSteps) recent_steps_.pop_front();
+  recent_steps_.push_back(r);
+}
+
+template <int D>
+std::string MpsSolver<D>::recentStepsCsv() const {
+  std::ostringstream out;
+  out << std::setprecision(9) << "time,step,dt,id,role";
+  for (int d = 0; d < D; ++d) out << "," << "xyz"[d];
+  out << ",speed,pressure\n";
+  for (const RecentStep& r : recent_steps_) {
+    out << r.time << "," << r.step << "," << r.dt << "," << r.id << "," << r.role;
+    for (int d = 0; d < D; ++d) out << "," << r.position[d];
+    out << "," << r.speed << "," << r.pressure << "\n";
+  }
   return out.str();
 }
 
@@ -425,6 +466,7 @@ double MpsSolver<D>::chooseTimeStepFor(double until) {
   } else if (remaining < 2.0 * dt) {
     dt = 0.5 * remaining;  // avoid a sliver step just before an output time
   }
+  recordStep(dt);
   if (dt < config_.numerics.dt_min && remaining > config_.numerics.dt_min) {
     std::ostringstream msg;
     msg << "time step " << dt << " s fell below numerics.dt_min = " << config_.numerics.dt_min

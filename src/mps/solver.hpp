@@ -20,6 +20,7 @@
 #include <optional>
 #include <utility>
 #include <stdexcept>
+#include <deque>
 #include <string>
 
 #include "case/case_config.hpp"
@@ -130,6 +131,10 @@ class MpsSolver {
   double maxFluidSpeed() const;
   std::pair<double, double> maxPhaseSpeeds() const;  // fastest liquid and gas particle [m/s]
   std::string fastestParticle() const;               // its id, phase, role and place, in words
+  // The last kRecentSteps steps' time, dt and fastest fluid particle, as CSV with a header line, oldest first (for
+  // diverged.txt: which particle shortened the step before a divergence).
+  std::string recentStepsCsv() const;
+  static constexpr std::size_t kRecentSteps = 200;
   double particleMass(std::size_t i) const;
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
   const NeighborList& currentNeighbours();
@@ -254,6 +259,16 @@ class MpsSolver {
   std::vector<std::int32_t> row_ids_;    // what each row of the system being solved is (solveLinear)
   std::vector<std::int64_t> row_keys_;   // its rows' particle ids (solveLinear)
   StepReport report_;
+  struct RecentStep {  // a step's time and dt, and its fastest fluid particle when dt was chosen
+    double time = 0.0, dt = 0.0, speed = 0.0, pressure = 0.0;
+    std::int64_t step = 0;
+    std::uint64_t id = 0;
+    const char* role = "";
+    Vec<D> position = Vec<D>::Zero();
+  };
+  std::deque<RecentStep> recent_steps_;
+  std::size_t fastestFluidIndex() const;  // particles.size() when there is no fluid particle
+  void recordStep(double dt);
   bool reorder_pending_ = true;  // sort the particles by place before the next step (spatial_order.hpp)
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
   StageTimer timer_;
