@@ -79,7 +79,8 @@ print(f"t = {float(last['time']):.2f} s, {last['step']} steps; escaped {last['es
       f"collisions {total('collisions'):.0f}, gas_correction_capped {total('gas_correction_capped'):.0f}, "
       f"gas_speed_capped {total('gas_speed_capped'):.0f}, dispersed_gas {total('dispersed_gas'):.0f}, "
       f"entrained_swaps {total('entrained_swaps'):.0f}, points_unpaired {total('points_unpaired'):.0f}, "
-      f"shift_cuts {total('shift_cuts'):.0f}, liquid_wall_collisions {total('liquid_wall_collisions'):.0f}")
+      f"shift_cuts {total('shift_cuts'):.0f}, liquid_wall_collisions {total('liquid_wall_collisions'):.0f}, "
+      f"points_coalesced {total('points_coalesced'):.0f} of {total('points_made'):.0f} made")
 PY
 /usr/bin/python3 "$tools_dir/overfall_profile.py" "$out/waterfall_small" --from 2 | grep -E "last l0|^nappe" || true
 /usr/bin/python3 "$tools_dir/air_flow_pattern.py" "$out/waterfall_small" --from 2 | tail -n 5 || true
