@@ -268,16 +268,16 @@ class EntrainedBubbles {
         cells_[key(cellOf(p.position[j]))].push_back(static_cast<std::int32_t>(j));
     }
   }
-  // Visits the particles binned in the cells whose offset o from cell c has max |o_d| == ring (ring < 0: every cell
-  // of the box within |ring|), the first axis fastest.
-  template <class Visit>
-  void forEachInCells(const Eigen::Matrix<std::int64_t, D, 1>& c, int ring, Visit&& visit) const {
+  // Visits what `cells` (cells_ or points_) holds in the cells whose offset o from cell c has max |o_d| == ring
+  // (ring < 0: every cell of the box within |ring|), the first axis fastest.
+  template <class Cells, class Visit>
+  void forEachInCells(const Cells& cells, const Eigen::Matrix<std::int64_t, D, 1>& c, int ring, Visit&& visit) const {
     const int reach = std::abs(ring);
     Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-reach);
     while (true) {
       if (ring < 0 || o.cwiseAbs().maxCoeff() == ring)
-        if (const auto it = cells_.find(key(c + o)); it != cells_.end())
-          for (auto j : it->second) visit(j);
+        if (const auto it = cells.find(key(c + o)); it != cells.end())
+          for (const auto& j : it->second) visit(j);
       int d = 0;
       while (d < D && o[d] == reach) o[d++] = -reach;
       if (d == D) break;
@@ -287,7 +287,7 @@ class EntrainedBubbles {
   // The particles binned in the cell of x and the cells around it (within re at least).
   template <class Visit>
   void forEachNear(const Vec<D>& x, Visit&& visit) const {
-    forEachInCells(cellOf(x), -1, visit);
+    forEachInCells(cells_, cellOf(x), -1, visit);
   }
   Liquid liquidAround(const Particles<D>& p, const std::vector<Vec<D>>& start_velocity, const Vec<D>& x, double dt,
                       std::vector<std::int32_t>& near, std::vector<double>& share) const {
@@ -349,17 +349,10 @@ class EntrainedBubbles {
   }
   // Whether a point binned in points_ lies closer than l0/2 to x (the cells are re >= l0/2 wide).
   bool pointWithin(const Vec<D>& x) const {
-    const auto c = cellOf(x);
-    Eigen::Matrix<std::int64_t, D, 1> o = Eigen::Matrix<std::int64_t, D, 1>::Constant(-1);
-    while (true) {
-      if (const auto it = points_.find(key(c + o)); it != points_.end())
-        for (const Vec<D>& y : it->second)
-          if ((y - x).squaredNorm() < 0.25 * l0_ * l0_) return true;
-      int d = 0;
-      while (d < D && o[d] == 1) o[d++] = -1;
-      if (d == D) return false;
-      ++o[d];
-    }
+    bool within = false;
+    forEachInCells(points_, cellOf(x), -1,
+                   [&](const Vec<D>& y) { within = within || (y - x).squaredNorm() < 0.25 * l0_ * l0_; });
+    return within;
   }
   // The water particle nearest to x, searched ring by ring of cells outwards (up to kReleaseRings cells away): a
   // point in an air pocket wider than re gives its volume back at the pocket's edge. -1 if there is none that near.
@@ -370,7 +363,7 @@ class EntrainedBubbles {
     for (int ring = 0; ring <= kReleaseRings; ++ring) {
       // every cell of this ring is at least (ring - 1) cells away from x: stop when that is beyond the nearest found
       if (nearest >= 0 && (ring - 1) * cell_ > std::sqrt(closest)) break;
-      forEachInCells(c, ring, [&](std::int32_t j) {
+      forEachInCells(cells_, c, ring, [&](std::int32_t j) {
         if (p.kind[j] != ParticleKind::Fluid || p.phase[j] != Phase::Liquid) return;
         const double r = (p.position[j] - x).squaredNorm();
         if (nearest < 0 || r < closest) nearest = j, closest = r;
