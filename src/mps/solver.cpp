@@ -99,25 +99,19 @@ double MpsSolver<D>::maxFluidSpeed() const {
 }
 
 template <int D>
-std::size_t MpsSolver<D>::fastestFluidIndex() const {
+const char* MpsSolver<D>::roleOf(std::size_t i) const {
   const auto& p = state_.particles;
-  std::size_t fastest = p.size();
-  double top = -1.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.kind[i] == ParticleKind::Fluid && p.velocity[i].norm() > top) top = p.velocity[i].norm(), fastest = i;
-  return fastest;
+  return p.phase[i] != Phase::Gas ? "liquid" : (p.enclosed[i] ? "bubble gas" : "open gas");
 }
 
-// Which particle is the fastest, for a divergence's message: its id, phase, role and place.
+// Which particle is the fastest, for a divergence's message: its id, role and place.
 template <int D>
 std::string MpsSolver<D>::fastestParticle() const {
   const auto& p = state_.particles;
-  const std::size_t fastest = fastestFluidIndex();
+  const std::size_t fastest = fluidSpeeds().fastest;
   if (fastest == p.size()) return "no fluid particle";
   std::ostringstream out;
-  const bool gas = p.phase[fastest] == Phase::Gas;
-  out << "particle id " << p.id[fastest] << ", "
-      << (gas ? (p.enclosed[fastest] ? "gas of an enclosed bubble" : "open gas") : "liquid") << ", at (";
+  out << "particle id " << p.id[fastest] << ", " << roleOf(fastest) << ", at (";
   for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[fastest][d];
   out << ") m, pressure " << p.pressure[fastest] << " Pa";
   return out.str();
@@ -125,15 +119,15 @@ std::string MpsSolver<D>::fastestParticle() const {
 
 // The step about to be taken, for recentStepsCsv: its dt and the fastest fluid particle now.
 template <int D>
-void MpsSolver<D>::recordStep(double dt) {
+void MpsSolver<D>::recordStep(double dt, std::size_t fastest) {
   const auto& p = state_.particles;
   RecentStep r;
   r.time = state_.time;
   r.step = state_.step;
   r.dt = dt;
-  if (const std::size_t i = fastestFluidIndex(); i < p.size()) {
+  if (const std::size_t i = fastest; i < p.size()) {
     r.id = p.id[i];
-    r.role = p.phase[i] != Phase::Gas ? "liquid" : (p.enclosed[i] ? "bubble gas" : "open gas");
+    r.role = roleOf(i);
     r.position = p.position[i];
     r.speed = p.velocity[i].norm();
     r.pressure = p.pressure[i];
@@ -158,19 +152,40 @@ std::string MpsSolver<D>::recentStepsCsv() const {
 
 template <int D>
 std::pair<double, double> MpsSolver<D>::maxPhaseSpeeds() const {
+  const FluidSpeeds s = fluidSpeeds();
+  return {s.liquid, s.gas};
+}
+
+// Each thread keeps its own fastest of each phase and its fastest particle; they are merged in thread order, and the
+// first index wins a tie, so the answer does not depend on the number of threads.
+template <int D>
+typename MpsSolver<D>::FluidSpeeds MpsSolver<D>::fluidSpeeds() const {
   const auto& p = state_.particles;
-  double liquid = 0.0, gas = 0.0;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
-#pragma omp parallel for reduction(max : liquid, gas) schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) {
-    if (p.kind[i] != ParticleKind::Fluid) continue;
-    const double speed = p.velocity[i].norm();
-    if (p.phase[i] == Phase::Gas)
-      gas = std::max(gas, speed);
-    else
-      liquid = std::max(liquid, speed);
+  FluidSpeeds all;
+  all.fastest = p.size();
+  double top = -1.0;
+#pragma omp parallel
+  {
+    FluidSpeeds mine;
+    mine.fastest = p.size();
+    double my_top = -1.0;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (p.kind[i] != ParticleKind::Fluid) continue;
+      const double speed = p.velocity[i].norm();
+      double& phase_top = p.phase[i] == Phase::Gas ? mine.gas : mine.liquid;
+      phase_top = std::max(phase_top, speed);
+      if (speed > my_top) my_top = speed, mine.fastest = static_cast<std::size_t>(i);
+    }
+#pragma omp critical(mistfall_fluid_speeds)
+    {
+      all.liquid = std::max(all.liquid, mine.liquid);
+      all.gas = std::max(all.gas, mine.gas);
+      if (my_top > top || (my_top == top && mine.fastest < all.fastest)) top = my_top, all.fastest = mine.fastest;
+    }
   }
-  return {liquid, gas};
+  return all;
 }
 
 template <int D>
@@ -453,7 +468,8 @@ double MpsSolver<D>::chooseTimeStepFor(double until) {
   double nu = 0.0;
   for (int ph = 0; ph < 2; ++ph)
     if (phase_present_[ph]) nu = std::max(nu, phases_[ph].kinematic_viscosity);
-  const auto [liquid_speed, gas_speed] = maxPhaseSpeeds();
+  const FluidSpeeds speeds = fluidSpeeds();
+  const double liquid_speed = speeds.liquid, gas_speed = speeds.gas;
   double dt = chooseTimeStep(std::max(liquid_speed, gas_speed), constants_.l0, config_.numerics.courant, nu,
                              config_.numerics.dt_max);
   // What set it (issue 17, item 4): the step the liquid alone would allow, and whether a gas particle's Courant
@@ -466,7 +482,7 @@ double MpsSolver<D>::chooseTimeStepFor(double until) {
   } else if (remaining < 2.0 * dt) {
     dt = 0.5 * remaining;  // avoid a sliver step just before an output time
   }
-  recordStep(dt);
+  recordStep(dt, speeds.fastest);
   if (dt < config_.numerics.dt_min && remaining > config_.numerics.dt_min) {
     std::ostringstream msg;
     msg << "time step " << dt << " s fell below numerics.dt_min = " << config_.numerics.dt_min

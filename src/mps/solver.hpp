@@ -267,8 +267,13 @@ class MpsSolver {
     Vec<D> position = Vec<D>::Zero();
   };
   std::deque<RecentStep> recent_steps_;
-  std::size_t fastestFluidIndex() const;  // particles.size() when there is no fluid particle
-  void recordStep(double dt);
+  struct FluidSpeeds {  // the fastest liquid and gas speeds [m/s] and the fastest fluid particle's index
+    double liquid = 0.0, gas = 0.0;
+    std::size_t fastest = 0;  // particles.size() when there is no fluid particle
+  };
+  FluidSpeeds fluidSpeeds() const;  // one parallel pass over the particles
+  const char* roleOf(std::size_t i) const;  // "liquid", "open gas" or "bubble gas" (docs/two-phase.md, section 1)
+  void recordStep(double dt, std::size_t fastest);
   bool reorder_pending_ = true;  // sort the particles by place before the next step (spatial_order.hpp)
   int full_neighbour_count_ = 0;  // neighbours within re of a particle inside a full lattice
   StageTimer timer_;
