@@ -262,12 +262,19 @@ TEST(CaseFileGas, BubbleGasKeys) {
   const CaseConfig b = parseCase(p.text(), "t.toml");
   EXPECT_TRUE(b.numerics.gas_pressure_memory);
   EXPECT_FALSE(b.numerics.gas_pressure_memory_open);
+  EXPECT_TRUE(b.numerics.gas_pressure_memory_bubbles);
+  p = Parts{};
+  p.numerics += "gas_pressure_memory = \"open_gas\"\n";  // the open gas's rows only
+  const CaseConfig o = parseCase(p.text(), "t.toml");
+  EXPECT_TRUE(o.numerics.gas_pressure_memory);
+  EXPECT_TRUE(o.numerics.gas_pressure_memory_open);
+  EXPECT_FALSE(o.numerics.gas_pressure_memory_bubbles);
   p = Parts{};
   p.numerics += "gas_pressure_memory = \"open\"\n";
-  EXPECT_HAS(errorOf(p.text()), "allowed \"bubbles\"");
+  EXPECT_HAS(errorOf(p.text()), "allowed \"bubbles\" or \"open_gas\"");
   p = Parts{};
   p.numerics += "gas_pressure_memory = 1\n";
-  EXPECT_HAS(errorOf(p.text()), "true, false or \"bubbles\"");
+  EXPECT_HAS(errorOf(p.text()), "true, false, \"bubbles\" or \"open_gas\"");
   p = Parts{};
   p.numerics += "bubble_initial_pressure = \"zero\"\n";
   EXPECT_FALSE(parseCase(p.text(), "t.toml").numerics.bubble_start_at_water_pressure);

@@ -202,9 +202,11 @@ struct NumericsConfig {
   // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
   // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
   bool gas_pressure_memory = false;
-  // With gas_pressure_memory: the open gas's rows carry it too (true, the key's `true`) or only the bubbles' rows
-  // (false, the key's "bubbles": the bubbles at the gas's stiffness, the open air as soft as without the key).
+  // With gas_pressure_memory: the open gas's rows carry it (true: the key's `true` and "open_gas") or not (false, the
+  // key's "bubbles": the open air as soft as without the key), and the bubbles' rows carry it (true: `true` and
+  // "bubbles") or not (false, the key's "open_gas": the air at its stiffness, the bubbles as soft as without the key).
   bool gas_pressure_memory_open = true;
+  bool gas_pressure_memory_bubbles = true;
   // With gas_pressure_memory: a fresh run's first step holds each bubble's row incompressible (no eq. (17) shift, no
   // memory), so a bubble present at t = 0 starts at the pressure the water around it needs (its hydrostatic
   // pressure), and the memory carries that on: p = P_0 + rho_g c^2 delta (the key's "water", the default). false

@@ -202,10 +202,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "dispersed_gas_fraction", {0.0, 1.0, false, false}, n.dispersed_gas_fraction);
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   if (const auto f = rd.field(nm, np, "gas_pressure_memory"); f.node && f.node->is_string()) {
-    if (rd.choice(nm, np, "gas_pressure_memory", {"bubbles"}) == 0)
-      n.gas_pressure_memory = true, n.gas_pressure_memory_open = false;
+    const int s = rd.choice(nm, np, "gas_pressure_memory", {"bubbles", "open_gas"});
+    if (s >= 0) n.gas_pressure_memory = true, n.gas_pressure_memory_open = s == 1, n.gas_pressure_memory_bubbles = s == 0;
   } else if (f.node && !f.node->is_boolean()) {
-    rd.wrongType(f, "true, false or \"bubbles\"");
+    rd.wrongType(f, "true, false, \"bubbles\" or \"open_gas\"");
   } else {
     rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
   }

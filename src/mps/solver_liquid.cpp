@@ -52,8 +52,9 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   std::vector<double> group_shift, group_guess, group_reference;
   // eq. (17)'s shift on a bubble's row; none on a fresh run's first step with the memory term
   // (numerics.bubble_start_at_water_pressure): the bubble starts at the water's pressure, which the memory keeps
-  const bool start_at_water_pressure = state_.step == 0 && config_.numerics.gas_pressure_memory &&
-                                       config_.numerics.bubble_start_at_water_pressure;
+  const bool bubble_memory = config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_bubbles;
+  const bool start_at_water_pressure =
+      state_.step == 0 && bubble_memory && config_.numerics.bubble_start_at_water_pressure;
   auto& references = state_.gas_reference_pressure;
   const double bubble_shift = std::isfinite(gas.sound_speed) && !start_at_water_pressure
                                   ? liquid.density / (gas.density * dt * dt * gas.sound_speed * gas.sound_speed)
@@ -97,8 +98,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step;
   // the density-drift term's share gamma of the shift times the gas's reference pressure, so that the row settles at
   // P_0 + rho_g c^2 delta, not at rho_g c^2 delta, for gas whose spacing is that of P_0 (bubble_initial_pressure)
-  if (config_.numerics.gas_pressure_memory && std::isfinite(gas.sound_speed) &&
-      source.kind == PressureSource::Mixed)
+  if (bubble_memory && std::isfinite(gas.sound_speed) && source.kind == PressureSource::Mixed)
     for (std::size_t g = 0; g < group_shift.size(); ++g)
       lumped_.rhs[lumped_.first_group_row + static_cast<std::int64_t>(g)] +=
           (1.0 - source.relaxation) * group_shift[g] * group_guess[g] + source.relaxation * group_reference[g];
