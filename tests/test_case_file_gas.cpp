@@ -242,7 +242,8 @@ TEST(CaseFileGas, BubbleGasKeys) {
   const CaseConfig d = parseCase(Parts{}.text(), "t.toml");
   EXPECT_EQ(d.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::FollowLiquid);
   EXPECT_DOUBLE_EQ(d.numerics.bubble_regularisation, 10.0);
-  EXPECT_FALSE(d.numerics.gas_pressure_memory);
+  EXPECT_FALSE(d.numerics.gas_pressure_memory_open);
+  EXPECT_FALSE(d.numerics.gas_pressure_memory_bubbles);
   EXPECT_TRUE(d.numerics.bubble_start_at_water_pressure);
   EXPECT_FALSE(d.numerics.bubble_divergence_whole);
   EXPECT_FALSE(d.numerics.gas_collision_after_correction);
@@ -253,20 +254,18 @@ TEST(CaseFileGas, BubbleGasKeys) {
   const CaseConfig c = parseCase(p.text(), "t.toml");
   EXPECT_EQ(c.numerics.bubble_gas_motion, NumericsConfig::BubbleGasMotion::OwnPressure);
   EXPECT_DOUBLE_EQ(c.numerics.bubble_regularisation, 0.0);
-  EXPECT_TRUE(c.numerics.gas_pressure_memory);
   EXPECT_TRUE(c.numerics.gas_pressure_memory_open);
+  EXPECT_TRUE(c.numerics.gas_pressure_memory_bubbles);
   EXPECT_TRUE(c.numerics.gas_collision_after_correction);
   EXPECT_TRUE(c.numerics.liquid_collision_after_correction);
   p = Parts{};
   p.numerics += "gas_pressure_memory = \"bubbles\"\n";  // the bubbles' rows only
   const CaseConfig b = parseCase(p.text(), "t.toml");
-  EXPECT_TRUE(b.numerics.gas_pressure_memory);
   EXPECT_FALSE(b.numerics.gas_pressure_memory_open);
   EXPECT_TRUE(b.numerics.gas_pressure_memory_bubbles);
   p = Parts{};
   p.numerics += "gas_pressure_memory = \"open_gas\"\n";  // the open gas's rows only
   const CaseConfig o = parseCase(p.text(), "t.toml");
-  EXPECT_TRUE(o.numerics.gas_pressure_memory);
   EXPECT_TRUE(o.numerics.gas_pressure_memory_open);
   EXPECT_FALSE(o.numerics.gas_pressure_memory_bubbles);
   p = Parts{};

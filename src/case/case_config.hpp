@@ -199,15 +199,13 @@ struct NumericsConfig {
   double gas_speed_limit = 0.0;
   // With pressure_source = "mixed", the compressible rows of eq. (17) carry the last pressure (the time-integrated
   // continuity equation of the gas; pressure_poisson.hpp), so compressed gas holds p = rho_g c^2 (n - n0)/n0.
-  // false (the default until the coupling is rebuilt, docs/two-phase.md): the rows as before, where the gas settles at
-  // source_relaxation times that (100x too soft at 0.01); the shipped bubble only rises with that softness.
-  bool gas_pressure_memory = false;
-  // With gas_pressure_memory: the open gas's rows carry it (true: the key's `true` and "open_gas") or not (false, the
-  // key's "bubbles": the open air as soft as without the key), and the bubbles' rows carry it (true: `true` and
-  // "bubbles") or not (false, the key's "open_gas": the air at its stiffness, the bubbles as soft as without the key).
-  bool gas_pressure_memory_open = true;
-  bool gas_pressure_memory_bubbles = true;
-  // With gas_pressure_memory: a fresh run's first step holds each bubble's row incompressible (no eq. (17) shift, no
+  // Which rows carry it: the open gas's (the key gas_pressure_memory's `true` and "open_gas") and the bubbles' merged
+  // rows (`true` and "bubbles"). Neither (the key's `false`, the default until the coupling is rebuilt,
+  // docs/two-phase.md): the rows as before, where the gas settles at source_relaxation times that (100x too soft at
+  // 0.01); the shipped bubble only rises with that softness.
+  bool gas_pressure_memory_open = false;
+  bool gas_pressure_memory_bubbles = false;
+  // With the bubbles' memory: a fresh run's first step holds each bubble's row incompressible (no eq. (17) shift, no
   // memory), so a bubble present at t = 0 starts at the pressure the water around it needs (its hydrostatic
   // pressure), and the memory carries that on: p = P_0 + rho_g c^2 delta (the key's "water", the default). false
   // ("zero"): the bubble starts at the ambient 0 Pa and breathes about its hydrostatic pressure (the runs before the

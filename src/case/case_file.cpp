@@ -203,11 +203,13 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "gas_speed_limit", {0.0, 1000.0, false, false}, n.gas_speed_limit);
   if (const auto f = rd.field(nm, np, "gas_pressure_memory"); f.node && f.node->is_string()) {
     const int s = rd.choice(nm, np, "gas_pressure_memory", {"bubbles", "open_gas"});
-    if (s >= 0) n.gas_pressure_memory = true, n.gas_pressure_memory_open = s == 1, n.gas_pressure_memory_bubbles = s == 0;
+    if (s >= 0) n.gas_pressure_memory_open = s == 1, n.gas_pressure_memory_bubbles = s == 0;
   } else if (f.node && !f.node->is_boolean()) {
     rd.wrongType(f, "true, false, \"bubbles\" or \"open_gas\"");
   } else {
-    rd.boolean(nm, np, "gas_pressure_memory", n.gas_pressure_memory);
+    bool memory = false;  // absent: false, the default
+    rd.boolean(nm, np, "gas_pressure_memory", memory);
+    n.gas_pressure_memory_open = n.gas_pressure_memory_bubbles = memory;
   }
   if (int s = rd.choice(nm, np, "bubble_initial_pressure", {"zero", "water"}); s >= 0)
     n.bubble_start_at_water_pressure = s == 1;

@@ -88,12 +88,12 @@ void MpsSolver<D>::solveGasPressure(double dt) {
       }
   }
   const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
-  // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step (not with
-  // numerics.gas_pressure_memory = "bubbles", which leaves the open gas's rows soft)
+  // eq. (17)'s memory (pressure_poisson.hpp) on the open gas's rows: its pressure of the last step (with
+  // numerics.gas_pressure_memory `true` or "open_gas"; "bubbles" leaves the open gas's rows soft)
   problem_.extra_rhs.clear();
   problem_.velocity_group.clear();  // the liquid system's bubble groups are not this system's
   problem_.sourceless.clear();  // the inflows' rows are the liquid's (inflow_pressure.hpp)
-  if (config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_open) {
+  if (config_.numerics.gas_pressure_memory_open) {
     problem_.extra_rhs.assign(n, 0.0);
     for (std::int64_t i = 0; i < n; ++i)
       if (roles_.open_gas[i] && problem_.unknown[i])

@@ -52,7 +52,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   std::vector<double> group_shift, group_guess, group_reference;
   // eq. (17)'s shift on a bubble's row; none on a fresh run's first step with the memory term
   // (numerics.bubble_start_at_water_pressure): the bubble starts at the water's pressure, which the memory keeps
-  const bool bubble_memory = config_.numerics.gas_pressure_memory && config_.numerics.gas_pressure_memory_bubbles;
+  const bool bubble_memory = config_.numerics.gas_pressure_memory_bubbles;
   const bool start_at_water_pressure =
       state_.step == 0 && bubble_memory && config_.numerics.bubble_start_at_water_pressure;
   auto& references = state_.gas_reference_pressure;
