@@ -1,3 +1,5 @@
+// The step of MpsSolver (solver.hpp): its stages in order, with a timer round each, and the stages of prediction,
+// time step, neighbours, number density and the particles' order. The other stages are in solver_*.cpp.
 #include "mps/solver.hpp"
 
 #include <omp.h>
@@ -5,11 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <iomanip>
 #include <sstream>
-#include <string_view>
 
-#include "mps/bubble_gas_motion.hpp"
 #include "mps/bubble_pressure.hpp"
 #include "mps/collision.hpp"
 #include "mps/entrained_gas_rise.hpp"
@@ -90,102 +89,6 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
 template <int D>
 double MpsSolver<D>::particleMass(std::size_t i) const {
   return phases_[static_cast<int>(state_.particles.phase[i])].density * std::pow(constants_.l0, D);
-}
-
-template <int D>
-double MpsSolver<D>::maxFluidSpeed() const {
-  const auto [liquid, gas] = maxPhaseSpeeds();
-  return std::max(liquid, gas);
-}
-
-template <int D>
-const char* MpsSolver<D>::roleOf(std::size_t i) const {
-  const auto& p = state_.particles;
-  return p.phase[i] != Phase::Gas ? "liquid" : (p.enclosed[i] ? "bubble gas" : "open gas");
-}
-
-// Which particle is the fastest, for a divergence's message: its id, role and place.
-template <int D>
-std::string MpsSolver<D>::fastestParticle() const {
-  const auto& p = state_.particles;
-  const std::size_t fastest = fluidSpeeds().fastest;
-  if (fastest == p.size()) return "no fluid particle";
-  std::ostringstream out;
-  out << "particle id " << p.id[fastest] << ", " << roleOf(fastest) << ", at (";
-  for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[fastest][d];
-  out << ") m, pressure " << p.pressure[fastest] << " Pa";
-  return out.str();
-}
-
-// The step about to be taken, for recentStepsCsv: its dt and the fastest fluid particle now.
-template <int D>
-void MpsSolver<D>::recordStep(double dt, std::size_t fastest) {
-  const auto& p = state_.particles;
-  RecentStep r;
-  r.time = state_.time;
-  r.step = state_.step;
-  r.dt = dt;
-  if (const std::size_t i = fastest; i < p.size()) {
-    r.id = p.id[i];
-    r.role = roleOf(i);
-    r.position = p.position[i];
-    r.speed = p.velocity[i].norm();
-    r.pressure = p.pressure[i];
-  }
-  if (recent_steps_.size() == kRecentSteps) recent_steps_.pop_front();
-  recent_steps_.push_back(r);
-}
-
-template <int D>
-std::string MpsSolver<D>::recentStepsCsv() const {
-  std::ostringstream out;
-  out << std::setprecision(9) << "time,step,dt,id,role";
-  for (int d = 0; d < D; ++d) out << "," << "xyz"[d];
-  out << ",speed,pressure\n";
-  for (const RecentStep& r : recent_steps_) {
-    out << r.time << "," << r.step << "," << r.dt << "," << r.id << "," << r.role;
-    for (int d = 0; d < D; ++d) out << "," << r.position[d];
-    out << "," << r.speed << "," << r.pressure << "\n";
-  }
-  return out.str();
-}
-
-template <int D>
-std::pair<double, double> MpsSolver<D>::maxPhaseSpeeds() const {
-  const FluidSpeeds s = fluidSpeeds();
-  return {s.liquid, s.gas};
-}
-
-// Each thread keeps its own fastest of each phase and its fastest particle; they are merged in thread order, and the
-// first index wins a tie, so the answer does not depend on the number of threads.
-template <int D>
-typename MpsSolver<D>::FluidSpeeds MpsSolver<D>::fluidSpeeds() const {
-  const auto& p = state_.particles;
-  const std::int64_t n = static_cast<std::int64_t>(p.size());
-  FluidSpeeds all;
-  all.fastest = p.size();
-  double top = -1.0;
-#pragma omp parallel
-  {
-    FluidSpeeds mine;
-    mine.fastest = p.size();
-    double my_top = -1.0;
-#pragma omp for schedule(static) nowait
-    for (std::int64_t i = 0; i < n; ++i) {
-      if (p.kind[i] != ParticleKind::Fluid) continue;
-      const double speed = p.velocity[i].norm();
-      double& phase_top = p.phase[i] == Phase::Gas ? mine.gas : mine.liquid;
-      phase_top = std::max(phase_top, speed);
-      if (speed > my_top) my_top = speed, mine.fastest = static_cast<std::size_t>(i);
-    }
-#pragma omp critical(mistfall_fluid_speeds)
-    {
-      all.liquid = std::max(all.liquid, mine.liquid);
-      all.gas = std::max(all.gas, mine.gas);
-      if (my_top > top || (my_top == top && mine.fastest < all.fastest)) top = my_top, all.fastest = mine.fastest;
-    }
-  }
-  return all;
 }
 
 template <int D>
@@ -330,84 +233,10 @@ const StepReport& MpsSolver<D>::step(double until) {
   return report_;
 }
 
-// delta_gl of eq. (7): which gas regions are enclosed by liquid (enclosed_gas.hpp), then the roles of the
-// particles in the two pressure systems. Without gas every active particle belongs to the liquid system.
-template <int D>
-void MpsSolver<D>::findBubbles() {
-  if (oneEquation()) {  // every active particle in the one equation, each gas particle with its own momentum
-    // Which gas is enclosed by water: in an open gas domain the rest of the gas may border empty space; with
-    // entrained points, the pockets below a bubble's resolution that may become points (entrained_bubbles.hpp).
-    regions_ = GasRegions{};
-    auto& p = state_.particles;
-    if (phase_present_[static_cast<int>(Phase::Gas)] &&
-        (config_.numerics.gas_domain == GasDomain::Open || entrainedPoints())) {
-      findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
-                        gasRegionOptions(&p.enclosed));
-      p.enclosed = regions_.enclosed_particle;
-      for (char e : regions_.enclosed) report_.bubbles += (e != 0);
-    }
-    assignCouplingRoles<D>(state_.particles, GasRegions{}, roles_);
-    for (std::size_t i = 0; i < state_.particles.size(); ++i) {
-      roles_.in_liquid_system[i] = isActive(state_.particles.kind[i]);
-      roles_.open_gas[i] = 0;
-    }
-    return;
-  }
-  if (phase_present_[static_cast<int>(Phase::Gas)]) {
-    auto& p = state_.particles;
-    findGasRegions<D>(p, near_neighbours_, constants_.re_number_density, constants_.l0, regions_,
-                      gasRegionOptions(&p.enclosed));
-    // Gas that was open and is enclosed now joins the water's system and is carried by the water.
-    std::vector<char> joined(p.size(), 0);
-    bool any_joined = false;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const bool was_enclosed = i < p.enclosed.size() && p.enclosed[i];
-      joined[i] = regions_.enclosed_particle[i] && !was_enclosed;
-      any_joined = any_joined || joined[i];
-    }
-    if (any_joined) adoptLiquidVelocity<D>(p, near_neighbours_, joined, constants_.re_number_density);
-    p.enclosed = regions_.enclosed_particle;
-    for (char e : regions_.enclosed) report_.bubbles += (e != 0);
-    report_.dispersed_gas = regions_.dispersed;
-  } else {
-    regions_ = GasRegions{};
-  }
-  assignCouplingRoles<D>(state_.particles, regions_, roles_,
-                         static_cast<std::size_t>(config_.numerics.bubble_min_particles));
-  report_.entrained_gas = roles_.entrained_count;
-}
-
-// The rules of findGasRegions from the case (enclosed_gas.hpp): in a closed gas domain a gas region below a
-// bubble's resolution that touches liquid is entrained gas (0, off, when the gas borders open space); the join
-// radius numerics.gas_region_link in metres (0: the number-density radius); numerics.dispersed_gas_fraction.
-template <int D>
-GasRegionOptions MpsSolver<D>::gasRegionOptions(const std::vector<char>* was_enclosed) const {
-  GasRegionOptions options;
-  options.was_enclosed = was_enclosed;
-  if (config_.numerics.gas_domain == GasDomain::Closed)
-    options.closed_small_region = static_cast<std::size_t>(config_.numerics.bubble_min_particles);
-  // numerics.closed_pockets = "unvented": the vents' gas at the step's start is the atmosphere
-  if (config_.numerics.closed_pockets == NumericsConfig::ClosedPockets::Unvented) options.vent_of = &vent_at_start_;
-  options.join_radius = config_.numerics.gas_region_link * constants_.l0;
-  options.dispersed_fraction = config_.numerics.dispersed_gas_fraction;
-  options.dispersed_touch = config_.numerics.dispersed_gas_touch * constants_.l0;
-  return options;
-}
-
 template <int D>
 const NeighborList& MpsSolver<D>::currentNeighbours() {
   buildNeighbours();
   return neighbours_;
-}
-
-template <int D>
-std::vector<BubbleStats> MpsSolver<D>::currentBubbles() {
-  if (!phase_present_[static_cast<int>(Phase::Gas)]) return {};
-  buildNeighbours();
-  GasRegions regions;
-  findGasRegions<D>(state_.particles, near_neighbours_, constants_.re_number_density, constants_.l0, regions,
-                    gasRegionOptions(&state_.particles.enclosed));
-  return bubbleStatistics<D>(state_.particles, regions, constants_.l0);
 }
 
 template <int D>
@@ -524,68 +353,6 @@ void MpsSolver<D>::predict(double dt) {
   }
 }
 
-template <int D>
-void MpsSolver<D>::collide(double dt) {
-  if (config_.numerics.collision_distance <= 0.0) return;
-  const auto& p = state_.particles;
-  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
-  const auto& open_gas = roles_.open_gas;
-  const CollisionCount count = collideWhere(
-      dt, [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); });
-  report_.collisions = count.reversals;
-  report_.collision_wall_limits = count.wall_limits;
-}
-
-// The collision model (collision.hpp) with numerics.collision_distance and collision_restitution, over the pairs
-// (i, j) where j may change i's velocity, with numerics.collision_wall_limit; the reversals and wall limits it made.
-template <int D>
-template <class Affects>
-CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
-  auto& p = state_.particles;
-  std::vector<double> mass(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
-  const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
-                             config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
-  return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,
-                                   near_neighbours_, model, dt, affects);
-}
-
-// numerics.gas_collision_after_correction: the collision model once more, after the gas system's correction, for gas
-// approaching liquid, walls or dummies (the gas takes the whole reversal: it shares momentum by mass). Measured on
-// waterfall_small at 3.78 s: a lone spray droplet (n = 1.1 against n0 = 6.5) held a lower pressure in the gas system
-// than the air around it, the minimum-neighbour gradient pushed the air particle beside it onto it (0.64 -> 0.155 l0
-// in one step, 11.9 m/s approach), and the next step's gas rows, with a pair at 0.155 l0, kicked the air to 1,300
-// m/s and two particles out of the domain (docs/two-phase.md).
-template <int D>
-void MpsSolver<D>::collideCorrectedGas(double dt) {
-  if (!config_.numerics.gas_collision_after_correction || config_.numerics.collision_distance <= 0.0) return;
-  const auto& p = state_.particles;
-  const CollisionCount count = collideWhere(dt, [&](std::int64_t i, std::int32_t j) {
-    return roles_.inGasSystem(i) && !isVentGas(static_cast<std::size_t>(i)) &&
-           (p.phase[j] == Phase::Liquid || isFixed(p.kind[j]));
-  });
-  report_.collisions += count.reversals;
-  report_.collision_wall_limits += count.wall_limits;
-}
-
-// numerics.liquid_collision_after_correction: the collision model once more, after the liquid correction, for water
-// approaching a wall or dummy particle (the water takes the whole reversal). The mirrored walls hold each particle's
-// own pressure (wall_mirror.hpp), so a particle the correction sends into a corner meets no pressure that sends it
-// back: traced at 5 mm (runs/wf5_tr30, docs/waterfall.md), the collision after the prediction turned water particle
-// 13312 away from the floor/weir corner every step and the correction turned it in again; over its last 20 ms the
-// prediction carried it 0.3-0.4 l0 into the corner on the velocity the correction left, until it passed into the
-// weir at 2.93 s and was lost.
-template <int D>
-void MpsSolver<D>::collideCorrectedLiquid(double dt) {
-  if (!config_.numerics.liquid_collision_after_correction || config_.numerics.collision_distance <= 0.0) return;
-  const auto& p = state_.particles;
-  const CollisionCount count = collideWhere(dt, [&](std::int64_t i, std::int32_t j) {
-    return p.phase[i] == Phase::Liquid && roles_.in_liquid_system[i] && isFixed(p.kind[j]);
-  });
-  report_.liquid_wall_collisions = count.reversals;
-  report_.collision_wall_limits += count.wall_limits;
-}
-
 // The walls' and dummies' pressure in the liquid system: paper scheme, extrapolated from the nearest wall particle
 // (they take part in the next correction); stabilised scheme, the mirrored wall pressure averaged over the fluid
 // around each (wall_mirror.hpp; output and wall loads only: the correction mirrors the fluid's own pressure).
@@ -607,60 +374,6 @@ void MpsSolver<D>::setLiquidWallPressure() {
                                  density, gravity_, liquid);
 }
 
-template <int D>
-void MpsSolver<D>::solveSystem(const std::vector<double>& guess, const char* which, int& iterations) {
-  const auto rows = system_.particle_of.size();
-  pressure_unknowns_.resize(rows);
-  for (std::size_t r = 0; r < rows; ++r) pressure_unknowns_[r] = guess[system_.particle_of[r]];
-  solveLinear(system_.matrix, system_.rhs, pressure_unknowns_, which, iterations);
-}
-
-template <int D>
-void MpsSolver<D>::solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                               Eigen::VectorXd& x, const char* which, int& iterations) {
-  const bool gas = std::string_view(which) == "gas";
-  // What each row is: the particle of the unknown (system_), or -1 - g for bubble g's merged unknown (lumped_).
-  row_ids_.assign(static_cast<std::size_t>(a.rows()), -1);
-  const auto& particle_of = system_.particle_of;
-  if (!gas && static_cast<Eigen::Index>(lumped_.column_of_row.size()) == static_cast<Eigen::Index>(particle_of.size()) &&
-      lumped_.matrix.rows() == a.rows()) {
-    for (std::size_t r = 0; r < particle_of.size(); ++r) {
-      const auto column = lumped_.column_of_row[r];
-      row_ids_[column] = column < lumped_.first_group_row ? particle_of[r] : -1 - (column - lumped_.first_group_row);
-    }
-  } else if (static_cast<Eigen::Index>(particle_of.size()) == a.rows()) {
-    row_ids_.assign(particle_of.begin(), particle_of.end());
-  }
-  // The amg solver's smoother blocks are cut from the rows in their own order: rows are numbered in particle order,
-  // and the particle arrays are kept sorted by the neighbour search's cells (spatial_order.hpp), so consecutive
-  // rows are neighbours in space (a bubble's merged unknown comes last).
-  // The rows' keys for the reuse of the preconditioner: the particles' ids, which they keep for their life.
-  row_keys_.resize(row_ids_.size());
-  for (std::size_t r = 0; r < row_ids_.size(); ++r)
-    row_keys_[r] = row_ids_[r] >= 0 ? static_cast<std::int64_t>(state_.particles.id[row_ids_[r]]) : row_ids_[r];
-  LinearSolver& solver = gas ? *gas_solver_ : *liquid_solver_;
-  const auto result = solver.solve(a, b, x, &row_keys_);
-  timer_.add(gas ? Stage::GasSetup : Stage::LiquidSetup, result.setup_seconds);
-  timer_.add(gas ? Stage::GasSolve : Stage::LiquidSolve, result.solve_seconds);
-  solve_seconds_ += result.setup_seconds + result.solve_seconds;
-  iterations = result.iterations;
-  if (!result.converged && !(result.relative_residual <= 1e3 * config_.numerics.solver_tolerance)) {
-    std::ostringstream msg;
-    msg << which << " pressure solve (" << solver.name() << ") did not converge: relative residual "
-        << result.relative_residual << " after " << result.iterations << " iterations ("
-        << "numerics.solver_tolerance = " << config_.numerics.solver_tolerance << ")";
-    throw DivergenceError(msg.str(), state_.time, state_.step);
-  }
-  report_.ppe_residual = std::max(report_.ppe_residual, result.relative_residual);
-}
-
-template <int D>
-void MpsSolver<D>::forgetReusedState() {
-  liquid_solver_->forget();
-  gas_solver_->forget();
-  reorder_pending_ = true;
-}
-
 // The particle arrays in the order of their cells (spatial_order.hpp), at the first step after construction and
 // after each output time, and every kSortInterval steps: a function of the state (its step count) only, so a resumed
 // run sorts as the unbroken one did. The neighbour list is made anew for the new indices; the kept AMG hierarchies
@@ -674,43 +387,6 @@ void MpsSolver<D>::sortParticlesBySpace() {
   p.reorder(orderByKey(key));
   search_.build(p.position, p.kind, p.id, neighbours_);
   reorder_pending_ = false;
-}
-
-template <int D>
-void MpsSolver<D>::markEscaped() {
-  auto& p = state_.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.kind[i] != ParticleKind::Fluid && p.kind[i] != ParticleKind::Point) continue;
-    const auto& x = p.position[i];
-    const bool inside = (x.array() >= domain_lower_.array()).all() && (x.array() <= domain_upper_.array()).all();
-    if (!inside && x.allFinite()) {
-      p.kind[i] = ParticleKind::Escaped;
-      p.velocity[i].setZero();
-      p.pressure[i] = 0.0;
-    }
-  }
-}
-
-template <int D>
-void MpsSolver<D>::checkHealth(double) const {
-  const auto& p = state_.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!p.position[i].allFinite() || !p.velocity[i].allFinite() || !std::isfinite(p.pressure[i])) {
-      std::ostringstream msg;
-      msg << "particle " << i << " has a non-finite position, velocity or pressure";
-      throw DivergenceError(msg.str(), state_.time, state_.step);
-    }
-  }
-  // Every fluid particle that has existed: in the domain, driven in an inflow, escaped, or removed by an outflow.
-  const std::size_t escaped = p.count(ParticleKind::Escaped);
-  const std::size_t total = p.count(ParticleKind::Fluid) + p.count(ParticleKind::Inflow) +
-                            p.count(ParticleKind::Point) + escaped + static_cast<std::size_t>(state_.removed);
-  if (total > 0 && static_cast<double>(escaped) > config_.numerics.max_escaped_fraction * static_cast<double>(total)) {
-    std::ostringstream msg;
-    msg << escaped << " of " << total << " fluid particles have left the domain (more than "
-        << "numerics.max_escaped_fraction = " << config_.numerics.max_escaped_fraction << ")";
-    throw DivergenceError(msg.str(), state_.time, state_.step);
-  }
 }
 
 template class MpsSolver<2>;
