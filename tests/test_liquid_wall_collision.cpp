@@ -1,9 +1,10 @@
 // numerics.liquid_collision_after_correction: the collision model once more after the liquid correction, for water
-// approaching a wall or dummy particle (solver.cpp, collideCorrectedLiquid). The mirrored walls of the stabilised
-// scheme hold each particle's own pressure, so nothing in the pressure pushes a particle back out of a corner, and
-// the correction can leave it moving in (the 5 mm waterfall lost a particle so, docs/waterfall.md). Here: still
-// water in a 10 x 10 cm tank, its bottom-left particle moved `inset` of the way from its lattice place (0.5 l0 from
-// both faces) towards the corner of the faces, within the collision distance of the corner's wall particles.
+// approaching a wall or dummy particle (solver_collisions.cpp, collideCorrectedLiquid). The mirrored walls of the
+// stabilised scheme hold each particle's own pressure, so nothing in the pressure pushes a particle back out of a
+// corner, and the correction can leave it moving in (the 5 mm waterfall lost a particle so, docs/waterfall.md).
+// Here: still water in a 10 x 10 cm tank, its bottom-left particle moved `inset` of the way from its lattice place
+// (0.5 l0 from both faces) towards the corner of the faces, within the collision distance of the corner's wall
+// particles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
