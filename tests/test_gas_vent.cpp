@@ -10,6 +10,10 @@
 #include <memory>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "case/case_file.hpp"
 #include "io/checkpoint.hpp"
@@ -318,6 +322,44 @@ TEST(GasVent, CrowdedVentGasIsMovedByItsColumnAndNoGuardCountsIt) {
     text.replace(text.find("collision_distance = 0.8"), 24, "collision_distance = 0.8\nshift_limit = 0.2");
     crowdVentGasAndStep(text, 0.335, 0.145, 0.155, 1e-5);
   }
+}
+
+// A vent prescribes its gas's place across the vent and its velocity (gas_vent.hpp), so air that meets a vent's gas
+// in the collision model takes the whole reversal, as at a wall (solver_collisions.cpp). Traced on the 5 mm waterfall
+// (docs/waterfall.md, thirty-fourth session): with the reversal shared by mass, the vent reset its particle's half at
+// the end of every step, the air beside it kept approaching (0.42, 0.29, 0.27 l0) and the gas rows threw it out at
+// 100 m/s. Here: the duct's air particle under the top vent's middle column, moved to 0.65 l0 below the column's first
+// layer and sent up at 1 m/s; with no restitution its approach is gone after the collision (shared: +0.5 m/s left).
+TEST(GasVent, AirMeetingAVentsGasTakesTheWholeReversal) {
+  VentRun run(ductCase(0.0, "collision_distance = 0.8\ncollision_restitution = 0.0\n"));
+  auto& p = run.state.particles;
+  auto at = [&](double x, double y) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == ParticleKind::Fluid && (p.position[i] - Vec<2>(x, y)).norm() < 1e-9) return i;
+    return p.size();
+  };
+  const std::size_t below = at(0.045, 0.295), first_layer = at(0.045, 0.305);
+  ASSERT_LT(below, p.size());
+  ASSERT_LT(first_layer, p.size());
+  p.position[below][1] = 0.2985;
+  p.velocity[below] = Vec<2>(0.0, 1.0);
+  const auto path = std::filesystem::temp_directory_path() / "mistfall_vent_collision_trace.csv";
+  run.solver->traceParticle(p.id[below], 0.0, path.string());
+  run.solver->step(1.0);
+  // The trace's rows: time, step, stage, row, id, kind, phase, enclosed, gas_system, x, y, ux, uy, ...
+  std::ifstream trace(path);
+  std::string line;
+  double uy = std::nan("");
+  while (std::getline(trace, line)) {
+    std::vector<std::string> field;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) field.push_back(cell);
+    if (field.size() > 12 && field[2] == "collision" && field[3] == "self") uy = std::stod(field[12]);
+  }
+  std::filesystem::remove(path);
+  ASSERT_TRUE(std::isfinite(uy)) << "no collision row for the particle in " << path;
+  EXPECT_LT(uy, 0.01);    // the vent's gas at rest but for one step of gravity: nothing left of the approach
+  EXPECT_GT(uy, -0.01);   // and no restitution
 }
 
 // The same duct with its top closed by a lid but for a vent over its middle 4 cm: the air turns round the lid's

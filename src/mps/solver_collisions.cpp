@@ -23,8 +23,12 @@ template <int D>
 template <class Affects>
 CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
   auto& p = state_.particles;
+  // A vent's gas moves as its column prescribes (gas_vent.hpp: the vent sets its place across the vent and its
+  // velocity at the step's end), so it takes no share of a reversal: the particle meeting it takes it all, as at a
+  // wall.
+  constexpr double kPrescribedMass = 1e30;
   std::vector<double> mass(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = particleMass(i);
+  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = isVentGas(i) ? kPrescribedMass : particleMass(i);
   const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
                              config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
   return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,
