@@ -11,7 +11,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +22,7 @@
 #include "support/air_column.hpp"
 #include "support/same_particles.hpp"
 #include "support/case_text.hpp"
+#include "support/scratch.hpp"
 
 using namespace mistfall;
 using test_support::errorOf;
@@ -343,7 +343,7 @@ TEST(GasVent, AirMeetingAVentsGasTakesTheWholeReversal) {
   ASSERT_LT(first_layer, p.size());
   p.position[below][1] = 0.2985;
   p.velocity[below] = Vec<2>(0.0, 1.0);
-  const auto path = std::filesystem::temp_directory_path() / "mistfall_vent_collision_trace.csv";
+  const auto path = test_support::freshDir("vent_collision") / "trace.csv";
   run.solver->traceParticle(p.id[below], 0.0, path.string());
   run.solver->step(1.0);
   // The trace's rows: time, step, stage, row, id, kind, phase, enclosed, gas_system, x, y, ux, uy, ...
@@ -351,12 +351,9 @@ TEST(GasVent, AirMeetingAVentsGasTakesTheWholeReversal) {
   std::string line;
   double uy = std::nan("");
   while (std::getline(trace, line)) {
-    std::vector<std::string> field;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) field.push_back(cell);
+    const std::vector<std::string> field = test_support::csvFields(line);
     if (field.size() > 12 && field[2] == "collision" && field[3] == "self") uy = std::stod(field[12]);
   }
-  std::filesystem::remove(path);
   ASSERT_TRUE(std::isfinite(uy)) << "no collision row for the particle in " << path;
   EXPECT_LT(uy, 0.01);    // the vent's gas at rest but for one step of gravity: nothing left of the approach
   EXPECT_GT(uy, -0.01);   // and no restitution

@@ -33,6 +33,7 @@ using namespace mistfall;
 
 namespace {
 
+using test_support::csvFields;
 using test_support::damBreakCase;
 using test_support::freshDir;
 using test_support::slurp;
@@ -514,9 +515,7 @@ TEST(SimulateDivergence, StopsWithCodeThreeAndKeepsTheFrames) {
   while (std::getline(record, line)) {
     if (line.rfind("time,step,dt,id,role,x,y,speed,pressure", 0) == 0) header = line;
     if (header.empty() || line == header || line.empty()) continue;
-    std::vector<std::string> fields;
-    std::stringstream row(line);
-    for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+    const std::vector<std::string> fields = csvFields(line);
     ASSERT_EQ(9u, fields.size()) << line;
     steps.push_back(fields);
   }
@@ -649,9 +648,7 @@ TEST(CliSimulate, ATraceFollowsTheParticleAndChangesNoResult) {
   std::vector<std::string> last;
   std::map<std::string, int> stages;
   while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream cs(line);
-    for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
+    const std::vector<std::string> cells = csvFields(line);
     ASSERT_GE(cells.size(), 12u) << line;
     EXPECT_GE(std::stod(cells[0]), 0.01 - 1e-12);
     if (cells[3] != "self") continue;

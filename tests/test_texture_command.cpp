@@ -13,6 +13,7 @@
 #include "io/texture_files.hpp"
 #include "io/vtk_writer.hpp"
 #include "support/cli.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace mistfall;
@@ -95,12 +96,7 @@ fs::path makeRun(const std::string& name, bool with_category = true, bool with_f
 std::vector<std::vector<std::string>> csvRows(const fs::path& file) {
   std::ifstream in(file);
   std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    rows.push_back(cells);
-  }
+  for (std::string line; std::getline(in, line);) rows.push_back(test_support::csvFields(line));
   return rows;
 }
 

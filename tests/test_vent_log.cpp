@@ -17,6 +17,7 @@
 
 namespace fs = std::filesystem;
 using namespace mistfall;
+using test_support::csvFields;
 using test_support::freshDir;
 
 namespace {
@@ -26,13 +27,6 @@ std::vector<std::string> linesOf(const fs::path& file) {
   std::vector<std::string> out;
   for (std::string l; std::getline(in, l);) out.push_back(l);
   return out;
-}
-
-std::vector<std::string> fieldsOf(const std::string& line) {
-  std::vector<std::string> f;
-  std::stringstream s(line);
-  for (std::string x; std::getline(s, x, ',');) f.push_back(x);
-  return f;
 }
 
 int simulateQuietly(const SimulateOptions& o) {
@@ -57,8 +51,8 @@ TEST(VentLog, WritesEachVentsExchangeAndItsAirFluxAndKeepsEarlierLinesOnResume) 
   auto all = linesOf(file);
   ASSERT_EQ(7u, all.size());
   EXPECT_EQ(VentLog::header(), all[0]);
-  EXPECT_EQ((std::vector<std::string>{"0", "cavity", "0", "0", "0", "0"}), fieldsOf(all[1]));
-  auto cavity = fieldsOf(all[3]), roof = fieldsOf(all[4]);
+  EXPECT_EQ((std::vector<std::string>{"0", "cavity", "0", "0", "0", "0"}), csvFields(all[1]));
+  auto cavity = csvFields(all[3]), roof = csvFields(all[4]);
   EXPECT_EQ("cavity", cavity[1]);
   EXPECT_EQ("3", cavity[2]);
   EXPECT_EQ("7", cavity[3]);
@@ -72,8 +66,8 @@ TEST(VentLog, WritesEachVentsExchangeAndItsAirFluxAndKeepsEarlierLinesOnResume) 
   }
   all = linesOf(file);
   ASSERT_EQ(7u, all.size());
-  EXPECT_EQ("0.029999999999999999", fieldsOf(all[5])[0]);
-  EXPECT_EQ("1", fieldsOf(all[5])[3]);
+  EXPECT_EQ("0.029999999999999999", csvFields(all[5])[0]);
+  EXPECT_EQ("1", csvFields(all[5])[3]);
 }
 
 // The command's vents.csv: one line a vent at every output time, the per-vent counts adding up to diagnostics.csv's
@@ -93,14 +87,14 @@ TEST(VentLog, SimulateWritesEveryVentsCountsAndResumesThem) {
   ASSERT_EQ(1u + 6 * 2, lines.size());  // t = 0, 0.02, ..., 0.1: two vents each
   std::map<std::string, std::int64_t> in, out;
   for (std::size_t k = 1; k < lines.size(); ++k) {
-    const auto f = fieldsOf(lines[k]);
+    const auto f = csvFields(lines[k]);
     in[f[1]] += std::stoll(f[2]);
     out[f[1]] += std::stoll(f[3]);
   }
   EXPECT_GT(in["bottom"], 10);  // air enters at the bottom at about 200 particles a second
   EXPECT_GT(out["top"], 10);    // and leaves at the top
   const auto diagnostics = linesOf(dir / "whole" / "diagnostics.csv");
-  const auto header = fieldsOf(diagnostics.front()), last = fieldsOf(diagnostics.back());
+  const auto header = csvFields(diagnostics.front()), last = csvFields(diagnostics.back());
   std::int64_t vented_in = -1, vented_out = -1;
   for (std::size_t c = 0; c < header.size(); ++c) {
     if (header[c] == "vented_in") vented_in = std::stoll(last[c]);
@@ -132,7 +126,7 @@ TEST(VentLog, ResumingAnOlderFileLeavesTheNewColumnEmptyOnItsLines) {
   ASSERT_EQ(4u, all.size());
   EXPECT_EQ(VentLog::header(), all[0]);
   EXPECT_EQ("0.02,roof,3,1,-0.01,", all[2]);
-  EXPECT_EQ((std::vector<std::string>{"0.040000000000000001", "roof", "0", "2", "0.01", "1"}), fieldsOf(all[3]));
+  EXPECT_EQ((std::vector<std::string>{"0.040000000000000001", "roof", "0", "2", "0.01", "1"}), csvFields(all[3]));
 }
 
 TEST(VentLog, ACaseWithoutVentsWritesNone) {

@@ -1,4 +1,5 @@
-// Test helpers: per-process scratch folders under the system temp dir, removed after all tests, and file slurping.
+// Test helpers: per-process scratch folders under the system temp dir, removed after all tests, file slurping, and
+// the fields of a CSV line.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,7 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace mistfall::test_support {
 
@@ -36,6 +39,14 @@ inline std::filesystem::path freshDir(const std::string& name) {
 inline std::string slurp(const std::filesystem::path& f) {
   std::ifstream in(f, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The comma-separated fields of one line of a CSV file that mistfall writes (no quoting).
+inline std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream cells(line);
+  for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+  return fields;
 }
 
 }  // namespace mistfall::test_support
