@@ -12,11 +12,9 @@
 #include "mps/bubble_pressure.hpp"
 #include "mps/collision.hpp"
 #include "mps/entrained_gas_rise.hpp"
-#include "mps/gas_vent.hpp"
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/number_density.hpp"
-#include "mps/open_boundaries.hpp"
 #include "mps/pair_loop.hpp"
 #include "mps/time_step.hpp"
 #include "mps/wall_mirror.hpp"
@@ -96,11 +94,9 @@ const StepReport& MpsSolver<D>::step(double until) {
   const double t0 = omp_get_wtime();
   report_ = StepReport{};
   if (reorder_pending_ || state_.step % kSortInterval == 0) sortParticlesBySpace();
-  if (!config_.vents.empty()) {  // the vents' particles now (gas_vent.hpp)
-    vent_at_start_ = ventOf<D>(state_.particles, config_);
-    vent_start_position_ = state_.particles.position;
-  }
+  holdVentStart();  // the vents' particles at the step's start (gas_vent.hpp)
   buildNeighbours();
+  // Gas regions and bubbles (delta_gl, eq. (3)), and which particle belongs to which pressure system.
   {
     auto t = timer_.scope(Stage::GasRegions);
     findBubbles();
@@ -110,7 +106,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     auto t = timer_.scope(Stage::TimeStep);
     dt = chooseTimeStepFor(until);
   }
-  if (entrainedPoints()) start_velocity_ = state_.particles.velocity;
+  // Viscosity and gravity, eqs. (1)-(2): u*, r*.
   {
     auto t = timer_.scope(Stage::Predict);
     predict(dt);
@@ -123,14 +119,7 @@ const StepReport& MpsSolver<D>::step(double until) {
   trace("collision");
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
-    report_.created = advanceInflows<D>(state_.particles, config_, dt);  // open_boundaries.hpp
-    state_.created += report_.created;
-    if (report_.created > 0) {  // the new water belongs to the liquid system and to no gas region
-      const std::size_t n = state_.particles.size();
-      roles_.extendForLiquid(n);
-      regions_.region_of.resize(n, -1);
-      regions_.enclosed_particle.resize(n, 0);
-    }
+    admitInflow(dt);
   }
   buildNeighbours();
   // The liquid system, eqs. (5), (7): liquid, walls and one pressure per bubble.
@@ -138,21 +127,10 @@ const StepReport& MpsSolver<D>::step(double until) {
     auto t = timer_.scope(Stage::NumberDensity);
     computeLiquidNumberDensity();
   }
-  double tp = omp_get_wtime();
-  solve_seconds_ = 0.0;
-  if (oneEquation())
-    solveOneEquationPressure(dt);
-  else
-    solveLiquidPressure(dt);  // assembly, then the solve (timed in solveLinear)
-  timer_.add(Stage::LiquidAssembly, omp_get_wtime() - tp - solve_seconds_);
+  solveLiquidSystem(dt);  // its assembly and solve, each timed
   {
     auto t = timer_.scope(Stage::LiquidCorrection);
-    setLiquidWallPressure();
-    report_.seconds_pressure = omp_get_wtime() - tp;
-    if (oneEquation())
-      correctOneEquation(dt);
-    else
-      correctLiquid(dt);
+    correctLiquidSystem(dt);
   }
   trace("liquid correction");
   {
@@ -170,53 +148,74 @@ const StepReport& MpsSolver<D>::step(double until) {
     moveBubbleGas(dt);
     trace("bubble gas motion");
   }
-  // The gas system, eqs. (6), (8): all gas, the moved liquid as its walls.
-  if (roles_.gas_count > 0 && !oneEquation()) {
-    buildNeighbours();
-    tp = omp_get_wtime();
-    solve_seconds_ = 0.0;
-    solveGasPressure(dt);
-    const double gas_seconds = omp_get_wtime() - tp;
-    timer_.add(Stage::GasAssembly, gas_seconds - solve_seconds_);
-    report_.seconds_pressure += gas_seconds;
-    auto t = timer_.scope(Stage::GasCorrection);
-    correctGas(dt);
-    trace("gas correction");
-    collideCorrectedGas(dt);
-    trace("gas collision");
-    riseEntrainedGas(dt);
-    trace("entrained gas rise");
-  }
-  if (entrainedPoints()) {
+  // The gas system, eqs. (6), (8), (17): all gas, the moved liquid as its walls.
+  if (roles_.gas_count > 0 && !oneEquation()) solveGasSystem(dt);  // its stages, each timed and traced
+  if (entrainedPoints()) {  // eq. (18) for the sub-particle bubbles, their reaction on the water (eq. (7))
     auto t = timer_.scope(Stage::GasCorrection);
     moveEntrainedBubbles(dt);
     trace("entrained bubbles");
   }
   {
     auto t = timer_.scope(Stage::OpenBoundaries);
-    if (!config_.vents.empty()) {
-      const VentExchange vented =
-          exchangeVentGas<D>(state_.particles, config_, vent_at_start_, vent_start_position_, dt,
-                             phases_[static_cast<int>(Phase::Gas)].density, gravity_);
-      report_.vented_in = vented.gas_in;
-      report_.vented_out = vented.gas_out;
-      report_.vent_crowded_out = vented.gas_crowded_out;
-      report_.vent_liquid_stops = static_cast<std::size_t>(vented.liquid_stops);
-      report_.vented_in_by_vent = vented.gas_in_by_vent;
-      report_.vented_out_by_vent = vented.gas_out_by_vent;
-      report_.vented_liquid_by_vent = vented.liquid_out_by_vent;
-      state_.vented_in += vented.gas_in;
-      state_.vented_out += vented.gas_out;
-      state_.removed += vented.liquid_out;
-      report_.removed += vented.liquid_out;
-    }
-    markEscaped();
-    const std::int64_t outflow = removeOutflow<D>(state_.particles, config_);
-    report_.removed += outflow;
-    state_.removed += outflow;
-    removeReleasedPoints();
+    ventAndRemove(dt);
   }
   trace("open boundaries");
+  advanceClock(until, dt);
+  {
+    auto t = timer_.scope(Stage::Health);
+    checkHealth(dt);
+  }
+  report_.seconds_total = omp_get_wtime() - t0;
+  return report_;
+}
+
+// The liquid system's assembly and solve: the pressure of the liquid and the bubbles (or, one_equation, of both
+// phases), with the wall and dummy pressures left to the correction.
+template <int D>
+void MpsSolver<D>::solveLiquidSystem(double dt) {
+  const double tp = omp_get_wtime();
+  solve_seconds_ = 0.0;
+  if (oneEquation())
+    solveOneEquationPressure(dt);
+  else
+    solveLiquidPressure(dt);
+  report_.seconds_pressure = omp_get_wtime() - tp;
+  timer_.add(Stage::LiquidAssembly, report_.seconds_pressure - solve_seconds_);  // solveLinear timed the solve
+}
+
+// The wall and dummy pressures, then -dt/rho grad p (eq. (7)).
+template <int D>
+void MpsSolver<D>::correctLiquidSystem(double dt) {
+  setLiquidWallPressure();
+  if (oneEquation())
+    correctOneEquation(dt);
+  else
+    correctLiquid(dt);
+}
+
+// The gas system, eqs. (6), (8), (17): its n*, rows and solve, the gas's correction and the guards after it, and the
+// entrained gas's rise.
+template <int D>
+void MpsSolver<D>::solveGasSystem(double dt) {
+  buildNeighbours();
+  const double tp = omp_get_wtime();
+  solve_seconds_ = 0.0;
+  solveGasPressure(dt);
+  const double gas_seconds = omp_get_wtime() - tp;
+  timer_.add(Stage::GasAssembly, gas_seconds - solve_seconds_);
+  report_.seconds_pressure += gas_seconds;
+  auto t = timer_.scope(Stage::GasCorrection);
+  correctGas(dt);
+  trace("gas correction");
+  collideCorrectedGas(dt);
+  trace("gas collision");
+  riseEntrainedGas(dt);
+  trace("entrained gas rise");
+}
+
+// The step's end: the clock moves on by dt, or to `until` when dt reaches it.
+template <int D>
+void MpsSolver<D>::advanceClock(double until, double dt) {
   const bool reached = until - state_.time <= dt;
   state_.time = reached ? until : state_.time + dt;
   // An output time, where a checkpoint may be written: a run resumed from it starts without what the solver keeps
@@ -225,12 +224,6 @@ const StepReport& MpsSolver<D>::step(double until) {
   state_.step += 1;
   state_.dt = dt;
   report_.dt = dt;
-  {
-    auto t = timer_.scope(Stage::Health);
-    checkHealth(dt);
-  }
-  report_.seconds_total = omp_get_wtime() - t0;
-  return report_;
 }
 
 template <int D>
@@ -325,6 +318,7 @@ double MpsSolver<D>::chooseTimeStepFor(double until) {
 template <int D>
 void MpsSolver<D>::predict(double dt) {
   auto& p = state_.particles;
+  if (entrainedPoints()) start_velocity_ = p.velocity;  // the water's material acceleration over the step
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> acceleration(n, Vec<D>::Zero());
   // The liquid's viscous term ignores the gas; the gas sees liquid and walls as walls moving with their velocity.

@@ -145,6 +145,14 @@ class MpsSolver {
   void traceParticle(std::uint64_t id, double from, const std::string& path);
 
  private:
+  // The step's stages beyond the named operators below (solver.cpp, solver_open_boundaries.cpp).
+  void holdVentStart();
+  void admitInflow(double dt);
+  void solveLiquidSystem(double dt);
+  void correctLiquidSystem(double dt);
+  void solveGasSystem(double dt);
+  void ventAndRemove(double dt);
+  void advanceClock(double until, double dt);
   void buildNeighbours();
   void sortParticlesBySpace();
   bool hasFullNeighbourhood(std::size_t i, const std::vector<char>& counts) const;
