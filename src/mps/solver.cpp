@@ -96,7 +96,7 @@ const StepReport& MpsSolver<D>::step(double until) {
   if (reorder_pending_ || state_.step % kSortInterval == 0) sortParticlesBySpace();
   holdVentStart();  // the vents' particles at the step's start (gas_vent.hpp)
   buildNeighbours();
-  // Gas regions and bubbles (delta_gl, eq. (3)), and which particle belongs to which pressure system.
+  // Gas regions and bubbles (the flag delta_gl of eq. (7)), and which particle belongs to which pressure system.
   {
     auto t = timer_.scope(Stage::GasRegions);
     findBubbles();
@@ -106,7 +106,7 @@ const StepReport& MpsSolver<D>::step(double until) {
     auto t = timer_.scope(Stage::TimeStep);
     dt = chooseTimeStepFor(until);
   }
-  // Viscosity and gravity, eqs. (1)-(2): u*, r*.
+  // The explicit step of eqs. (1)-(4): viscosity and gravity give u*, r*.
   {
     auto t = timer_.scope(Stage::Predict);
     predict(dt);
