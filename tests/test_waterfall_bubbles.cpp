@@ -3,9 +3,9 @@
 // particles, its centre 5.75 cm under the surface) with the [numerics] keys of each waterfall case that decide how
 // its liquid and its bubbles move. Without surface tension a 2D bubble rises at the large-bubble law,
 // U = 0.5 (g R)^(1/2) = 0.235 m/s for R0; over 0.12 s from rest its gas must rise at least half the law's distance.
-// Measured: with waterfall.toml's keys (soft bubbles, no memory term) the gas rises 2.42 cm; with
-// gas_pressure_memory = "bubbles" and the gas following the liquid (waterfall_small's keys up to the twenty-ninth
-// session) it ends 0.77 cm under its start, which this test fails.
+// Measured: with waterfall.toml's keys before the thirty-fifth session (soft bubbles, no memory term) the gas rises
+// 2.42 cm; with gas_pressure_memory = "bubbles" and the gas following the liquid (waterfall_small's keys up to the
+// twenty-ninth session) it ends 0.77 cm under its start, which this test fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
