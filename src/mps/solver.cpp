@@ -35,6 +35,18 @@ constexpr std::int64_t kSortInterval = 100;
 // that were unknowns of the set-up system (the gas system's rows change every step: the liquid next to the gas).
 constexpr PreconditionerReuse kPreconditionerReuse{8, 1, 0.9};
 
+// Runs a pressure system's assembly and solve, `assemble_and_solve`, whose linear solves add their seconds to
+// `solve_seconds` (solveLinear books them to their own stages); books the rest to `assembly` and returns the whole.
+template <class AssembleAndSolve>
+double timeAssembly(StageTimer& timer, Stage assembly, double& solve_seconds, AssembleAndSolve&& assemble_and_solve) {
+  const double start = omp_get_wtime();
+  solve_seconds = 0.0;
+  assemble_and_solve();
+  const double seconds = omp_get_wtime() - start;
+  timer.add(assembly, seconds - solve_seconds);
+  return seconds;
+}
+
 template <int D>
 Vec<D> firstComponents(const std::array<double, 3>& a) {
   Vec<D> v;
@@ -173,14 +185,12 @@ const StepReport& MpsSolver<D>::step(double until) {
 // phases), with the wall and dummy pressures left to the correction.
 template <int D>
 void MpsSolver<D>::solveLiquidSystem(double dt) {
-  const double tp = omp_get_wtime();
-  solve_seconds_ = 0.0;
-  if (oneEquation())
-    solveOneEquationPressure(dt);
-  else
-    solveLiquidPressure(dt);
-  report_.seconds_pressure = omp_get_wtime() - tp;
-  timer_.add(Stage::LiquidAssembly, report_.seconds_pressure - solve_seconds_);  // solveLinear timed the solve
+  report_.seconds_pressure = timeAssembly(timer_, Stage::LiquidAssembly, solve_seconds_, [&] {
+    if (oneEquation())
+      solveOneEquationPressure(dt);
+    else
+      solveLiquidPressure(dt);
+  });
 }
 
 // The wall and dummy pressures, then -dt/rho grad p (eq. (7)).
@@ -198,12 +208,7 @@ void MpsSolver<D>::correctLiquidSystem(double dt) {
 template <int D>
 void MpsSolver<D>::solveGasSystem(double dt) {
   buildNeighbours();
-  const double tp = omp_get_wtime();
-  solve_seconds_ = 0.0;
-  solveGasPressure(dt);
-  const double gas_seconds = omp_get_wtime() - tp;
-  timer_.add(Stage::GasAssembly, gas_seconds - solve_seconds_);
-  report_.seconds_pressure += gas_seconds;
+  report_.seconds_pressure += timeAssembly(timer_, Stage::GasAssembly, solve_seconds_, [&] { solveGasPressure(dt); });
   auto t = timer_.scope(Stage::GasCorrection);
   correctGas(dt);
   trace("gas correction");
