@@ -166,7 +166,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "gas_set_dt,liquid_dt_steps,entrained_gas,gas_correction_capped,gas_speed_capped,largest_shift,"
       "vented_in,vented_out,shift_cuts,bubble_points,points_made,points_released,point_wall_stops,points_unpaired,"
       "gap_water_floors,vent_crowded_out,shift_wall_stops,respacing_wall_stops,respacing_cuts,"
-      "collision_wall_limits,vent_liquid_stops,neighbour_surfaces,liquid_wall_collisions,points_coalesced",
+      "collision_wall_limits,vent_liquid_stops,neighbour_surfaces,liquid_wall_collisions,points_coalesced,bubble_gas_wall_stops",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -187,7 +187,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.bubble_points = 24; r.points_made = 25; r.points_released = 26; r.point_wall_stops = 27; r.points_unpaired = 28;
   r.gap_water_floors = 29; r.vent_crowded_out = 30; r.shift_wall_stops = 31; r.respacing_wall_stops = 32;
   r.respacing_cuts = 33; r.collision_wall_limits = 34; r.vent_liquid_stops = 35; r.neighbour_surfaces = 36;
-  r.liquid_wall_collisions = 37; r.points_coalesced = 38;
+  r.liquid_wall_collisions = 37; r.points_coalesced = 38; r.bubble_gas_wall_stops = 39;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -239,6 +239,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(30, rows[0].vent_crowded_out);
   EXPECT_EQ(31, rows[0].shift_wall_stops);
   EXPECT_EQ(32, rows[0].respacing_wall_stops);
+  EXPECT_EQ(39, rows[0].bubble_gas_wall_stops);
   EXPECT_EQ(33, rows[0].respacing_cuts);
   EXPECT_EQ(34, rows[0].collision_wall_limits);
   EXPECT_EQ(35, rows[0].vent_liquid_stops);

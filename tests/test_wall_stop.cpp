@@ -1,9 +1,12 @@
-// A position-only displacement stopped at the walls (mps/wall_stop.hpp, numerics.shift_wall_stop).
+// A position-only displacement stopped at the walls (mps/wall_stop.hpp, numerics.shift_wall_stop), and a bubble's gas
+// stopped at a floor as it follows the water (mps/bubble_gas_motion.hpp, numerics.bubble_gas_wall_stop).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
+#include "mps/bubble_gas_motion.hpp"
 #include "mps/neighbor_search.hpp"
 #include "mps/wall_stop.hpp"
 
@@ -77,4 +80,75 @@ TEST(WallStop, WaterInTheWayDoesNotStopADisplacement) {
   Vec<2> onto(0.0, -0.3 * kL0);  // to 0.7 l0 above the floor: the floor stops it, not the water
   EXPECT_TRUE(stopDisplacementAtWalls<2>(0, floor.position, floor.nl, kStop, floor.fixed(), onto));
   EXPECT_NEAR(0.0, onto.y(), 1e-15);
+}
+
+namespace {
+
+// Water over a floor: two wall rows at y = 0 and -l0 (x = -6..6 l0), water on the lattice above them up to y = 5 l0,
+// all moving down at 1 m/s, but for a bubble's gas (enclosed, at rest) in the three lattice points of the first row
+// above the floor at x = -l0, 0, l0. The water's velocity extended into the bubble carries the gas towards the floor.
+struct BubbleOnAFloor {
+  Particles<2> p;
+  CouplingRoles roles;
+  NeighborList nl;
+  std::vector<std::size_t> gas;
+  BubbleOnAFloor() {
+    for (int iy = -1; iy <= 5; ++iy)
+      for (int ix = -6; ix <= 6; ++ix) {
+        const Vec<2> x(ix * kL0, iy * kL0);
+        if (iy <= 0) {
+          p.add(x, Vec<2>::Zero(), ParticleKind::Wall, Phase::Liquid);
+        } else if (iy == 1 && std::abs(ix) <= 1) {
+          gas.push_back(p.size());
+          p.add(x, Vec<2>::Zero(), ParticleKind::Fluid, Phase::Gas);
+        } else {
+          p.add(x, Vec<2>(0.0, -1.0), ParticleKind::Fluid, Phase::Liquid);
+        }
+      }
+    const std::size_t n = p.size();
+    roles.open_gas.assign(n, 0);
+    roles.gas_side_wall.assign(n, 0);
+    roles.in_liquid_system.assign(n, 1);
+    roles.enclosed_gas.assign(n, 0);
+    for (auto i : gas) roles.enclosed_gas[i] = 1;
+    roles.enclosed_count = roles.gas_count = gas.size();
+    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    search.build(p.position, p.kind, nl);
+  }
+  double nearestWall(std::size_t i) const {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < p.size(); ++j)
+      if (p.kind[j] == ParticleKind::Wall) nearest = std::min(nearest, (p.position[j] - p.position[i]).norm());
+    return nearest;
+  }
+};
+
+}  // namespace
+
+// numerics.bubble_gas_wall_stop (a guard, counted): the bubble's gas has no pressure force of its own, so without the
+// key the water's velocity extended into it carries it into the floor's collision distance (traced on the 5 mm
+// waterfall: to 0.25 l0 from the first wall row); with it, the gas stops at the distance, its velocity matches its
+// move, and it keeps its motion along the floor.
+TEST(WallStop, ABubblesGasFollowingTheWaterStopsAtTheFloor) {
+  constexpr double kDt = 5e-3;  // the extension gives the gas about 0.3 m/s downwards: about 0.15 l0 a step
+  BubbleOnAFloor free_gas, stopped_gas;
+  const Vec<2> start = free_gas.p.position[free_gas.gas[1]];
+  EXPECT_EQ(0u, extendVelocityIntoBubbles<2>(free_gas.p, free_gas.nl, free_gas.roles, 2.1 * kL0, kDt));
+  const std::size_t stops = extendVelocityIntoBubbles<2>(stopped_gas.p, stopped_gas.nl, stopped_gas.roles,
+                                                         2.1 * kL0, kDt, nullptr, nullptr, kStop);
+  for (std::size_t k = 0; k < free_gas.gas.size(); ++k) {
+    SCOPED_TRACE(k);
+    const std::size_t i = free_gas.gas[k];
+    // Without the stop the gas moves down by more than the 0.2 l0 that the collision distance leaves it.
+    EXPECT_LT(free_gas.p.position[i].y() - start.y(), -0.2 * kL0);
+    EXPECT_LT(free_gas.nearestWall(i), kStop - 0.01 * kL0);
+    // With it, it is no nearer a wall particle than the distance, and its velocity carries its move.
+    EXPECT_GE(stopped_gas.nearestWall(i), kStop - 1e-12);
+    const Vec<2> move = stopped_gas.p.position[i] - Vec<2>(start.x() + (static_cast<double>(k) - 1.0) * kL0, start.y());
+    EXPECT_NEAR(move.x(), kDt * stopped_gas.p.velocity[i].x(), 1e-15);
+    EXPECT_NEAR(move.y(), kDt * stopped_gas.p.velocity[i].y(), 1e-15);
+    // The part of the move along the floor is the free gas's.
+    EXPECT_NEAR(free_gas.p.position[i].x(), stopped_gas.p.position[i].x(), 1e-3 * kL0);
+  }
+  EXPECT_EQ(free_gas.gas.size(), stops);
 }

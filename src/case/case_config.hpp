@@ -137,6 +137,10 @@ struct NumericsConfig {
   // approach a wall or dummy particle it would bring within collision_distance (wall_stop.hpp; counted:
   // shift_wall_stops and respacing_wall_stops in diagnostics.csv)
   bool shift_wall_stop = false;
+  // a guard: a bubble's gas (which follows the water, bubble_gas_motion.hpp) does not move towards a wall or dummy
+  // particle it would come within collision_distance of, by the water's velocity extended into the bubble nor by the
+  // gas system's re-spacing (wall_stop.hpp; counted: bubble_gas_wall_stops and respacing_wall_stops)
+  bool bubble_gas_wall_stop = false;
   // [l0] a guard: the gas system's re-spacing of a bubble's gas (a move without a velocity) is shortened to at most
   // this in a step (counted: respacing_cuts in diagnostics.csv); 0 = none
   double respacing_limit = 0.0;

@@ -244,6 +244,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.vent_crowded_out = std::exchange(guards.vent_crowded_out, 0);
     row.shift_wall_stops = std::exchange(guards.shift_wall_stops, 0);
     row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
+    row.bubble_gas_wall_stops = std::exchange(guards.bubble_gas_wall_stops, 0);
     row.respacing_cuts = std::exchange(guards.respacing_cuts, 0);
     row.collision_wall_limits = std::exchange(guards.collision_wall_limits, 0);
     row.vent_liquid_stops = std::exchange(guards.vent_liquid_stops, 0);
@@ -303,6 +304,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.vent_crowded_out += static_cast<std::int64_t>(last.vent_crowded_out);
         guards.shift_wall_stops += static_cast<std::int64_t>(last.shift_wall_stops);
         guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
+        guards.bubble_gas_wall_stops += static_cast<std::int64_t>(last.bubble_gas_wall_stops);
         guards.respacing_cuts += static_cast<std::int64_t>(last.respacing_cuts);
         guards.collision_wall_limits += static_cast<std::int64_t>(last.collision_wall_limits);
         guards.vent_liquid_stops += static_cast<std::int64_t>(last.vent_liquid_stops);

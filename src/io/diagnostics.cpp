@@ -116,6 +116,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::neighbour_surfaces>("neighbour_surfaces"),
     column<&DiagnosticsRow::liquid_wall_collisions>("liquid_wall_collisions"),
     column<&DiagnosticsRow::points_coalesced>("points_coalesced"),
+    column<&DiagnosticsRow::bubble_gas_wall_stops>("bubble_gas_wall_stops"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

@@ -73,6 +73,10 @@ struct DiagnosticsRow {
   // Position-only displacements stopped at a wall by numerics.shift_wall_stop since the previous row (particle-steps;
   // a guard, mps/wall_stop.hpp): the liquid's shifts, and the gas system's re-spacings of a bubble's gas.
   std::int64_t shift_wall_stops = 0, respacing_wall_stops = 0;
+  // A bubble gas's moves with the water (the velocity extended into the bubble) stopped at a wall by
+  // numerics.bubble_gas_wall_stop since the previous row (particle-steps; a guard, mps/bubble_gas_motion.hpp); its
+  // re-spacings stopped by the same key are counted in respacing_wall_stops.
+  std::int64_t bubble_gas_wall_stops = 0;
   // The gas system's re-spacings of a bubble's gas shortened to numerics.respacing_limit since the previous row
   // (particle-steps; a guard).
   std::int64_t respacing_cuts = 0;

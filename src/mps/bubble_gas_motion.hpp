@@ -33,6 +33,7 @@
 #include "mps/neighbor_search.hpp"
 #include "mps/particles.hpp"
 #include "mps/phase_coupling.hpp"
+#include "mps/wall_stop.hpp"
 #include "mps/weight.hpp"
 
 namespace mistfall {
@@ -100,10 +101,15 @@ std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const 
 // velocities and moves it by dt times the change. The neighbour list must reach `re`. With `translation`
 // (voidTranslation, indexed by `region_of`), the gas of each bubble that has one keeps the extension's departure from
 // its mean and moves on average with it.
+// With `wall_stop` > 0 (numerics.bubble_gas_wall_stop, a guard): the move loses its approach to each wall or dummy
+// particle it would bring within that distance (wall_stop.hpp), and the velocity keeps only the change that the
+// stopped move carries, u = u* + move / dt (the gas has no pressure force of its own to stop it: traced on the 5 mm
+// waterfall, the water's velocity extended into a bubble carried its gas to 0.25 l0 from the floor's first wall
+// row, docs/waterfall.md). The neighbour list must then reach wall_stop + |move| too. Returns the moves stopped.
 template <int D>
-void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
-                               double dt, const std::vector<std::optional<Vec<D>>>* translation = nullptr,
-                               const std::vector<std::int32_t>* region_of = nullptr) {
+std::size_t extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
+                                      double dt, const std::vector<std::optional<Vec<D>>>* translation = nullptr,
+                                      const std::vector<std::int32_t>* region_of = nullptr, double wall_stop = 0.0) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> before(p.velocity.begin(), p.velocity.end()), next(n);
   for (int sweep = 0; sweep < kBubbleVelocitySweeps; ++sweep) {
@@ -140,9 +146,20 @@ void extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const Co
         p.velocity[i] += *(*translation)[b] - mean[b] / count[b];
       }
   }
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i)
-    if (roles.enclosed_gas[i]) p.position[i] += dt * (p.velocity[i] - before[i]);
+  auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
+  std::size_t stops = 0;
+#pragma omp parallel for schedule(static) reduction(+ : stops)
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (!roles.enclosed_gas[i]) continue;
+    Vec<D> move = dt * (p.velocity[i] - before[i]);
+    if (wall_stop > 0.0 &&
+        stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, nl, wall_stop, fixed, move)) {
+      p.velocity[i] = before[i] + move / dt;
+      ++stops;
+    }
+    p.position[i] += move;
+  }
+  return stops;
 }
 
 // Gas that has just joined the liquid system (open at the last step, enclosed now: `joined[i]`) takes the

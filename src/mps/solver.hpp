@@ -100,7 +100,8 @@ struct StepReport {
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
   std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
-  std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by the same key
+  std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it or bubble_gas_wall_stop
+  std::size_t bubble_gas_wall_stops = 0; // a bubble gas's moves with the water stopped at a wall (bubble_gas_wall_stop)
   std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)
   std::size_t vent_liquid_stops = 0;   // vent columns held at liquid by numerics.vent_liquid_stop (gas_vent.hpp)

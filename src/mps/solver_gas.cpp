@@ -208,14 +208,14 @@ void MpsSolver<D>::correctGas(double dt) {
   report_.gas_correction_cuts = correction_cuts;
   report_.gas_speed_cuts = speed_cuts;
   const bool own_pressure = !bubbleGasFollowsLiquid();
-  // numerics.shift_wall_stop (a guard, counted): a bubble gas's re-spacing, a move without a velocity that the
-  // collision model cannot see, does not approach a wall particle it would bring within collision_distance
-  // (wall_stop.hpp; only fixed particles are read, so the loop may move the gas as it goes).
+  // numerics.shift_wall_stop or bubble_gas_wall_stop (guards, counted): a bubble gas's re-spacing, a move without a
+  // velocity that the collision model cannot see, does not approach a wall particle it would bring within
+  // collision_distance (wall_stop.hpp; only fixed particles are read, so the loop may move the gas as it goes).
   // numerics.respacing_limit (a guard, counted): a re-spacing longer than limit l0 is shortened to it. A re-spacing
   // changes no velocity, so the time step does not see it: traced on waterfall_small with the stiff bubbles, a bubble's
   // gas particle was re-spaced 4.3 l0 in one step to 0.12 l0 from another, and the next step's rows moved it 16 cm
   // through the floor (docs/waterfall.md).
-  const bool wall_stop = config_.numerics.shift_wall_stop;
+  const bool wall_stop = config_.numerics.shift_wall_stop || config_.numerics.bubble_gas_wall_stop;
   const double stop_distance = config_.numerics.collision_distance * constants_.l0;
   const double respacing_limit = config_.numerics.respacing_limit * constants_.l0;
   auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
@@ -313,13 +313,18 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
   using Motion = NumericsConfig::BubbleGasMotion;
   if (!bubbleGasFollowsLiquid()) return;
   const double re = constants_.re_number_density;
+  // numerics.bubble_gas_wall_stop (a guard, counted): the gas does not follow the water into a wall.
+  const double wall_stop =
+      config_.numerics.bubble_gas_wall_stop ? config_.numerics.collision_distance * constants_.l0 : 0.0;
   if (config_.numerics.bubble_gas_motion == Motion::FollowVoid) {
     const auto translation =
         voidTranslation<D>(state_.particles, roles_, regions_.region_of, regions_.regionCount(), constants_.l0);
-    extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt, &translation, &regions_.region_of);
+    report_.bubble_gas_wall_stops = extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt,
+                                                                 &translation, &regions_.region_of, wall_stop);
     return;
   }
-  extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt);
+  report_.bubble_gas_wall_stops =
+      extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt, nullptr, nullptr, wall_stop);
 }
 
 #define MISTFALL_INSTANTIATE(D)                              \
