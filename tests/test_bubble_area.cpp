@@ -1,0 +1,96 @@
+// Issue 16, item 1: a bubble's area within 1 % of its compressed equilibrium. The coarse bubble tank (l0 = 5 mm, a gas
+// disc of radius 2.25 cm, 62 gas particles, its centre 5.75 cm under the surface) on the stabilised scheme, at rest
+// under gravity. The bubble's area is measured from its gas's number density at the step's end positions,
+//   A = sum_{i in B} l0^2 n0 / n_i,
+// and its compressed equilibrium is what eq. (17) gives the gas for the bubble's pressure P_B:
+//   A_eq = N l0^2 (1 - (P_B - P_0) / (rho_g c_g^2)),
+// P_0 the pressure at which the gas is at its lattice spacing (the first step's P_B with
+// numerics.bubble_initial_pressure = "water", 0 Pa with "zero").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "mps/weight.hpp"
+#include "support/coarse_bubble_case.hpp"
+#include "support/run_case.hpp"
+
+using namespace mistfall;
+
+namespace {
+
+struct AreaCase {
+  const char* name;
+  const char* numerics;  // lines added to the coarse case's [numerics]
+  bool from_water;       // P_0 is the first step's P_B
+};
+
+struct AreaRecord {
+  double worst = 0.0;      // the largest |A / A_eq - 1| over the run
+  double area_loss = 0.0;  // 1 - A / (N l0^2) at the end
+  double pressure = 0.0;   // P_B at the end [Pa]
+};
+
+AreaRecord measure(const AreaCase& c, double until) {
+  test_support::SolverRun<2> run(test_support::coarseBubbleCase(c.numerics, std::to_string(until)), "bubble_area.toml");
+  const auto& p = run.state.particles;
+  const double l0 = run.config.numerics.particle_spacing, re = run.solver->constants().re_number_density;
+  const double n0 = run.solver->constants().n0;
+  const double stiffness = run.config.physics.gas.density * std::pow(run.config.physics.gas.sound_speed, 2);
+  AreaRecord out;
+  double p0 = 0.0;
+  while (run.state.time < until - 1e-12) {
+    run.solver->step(until);
+    const auto bubbles = run.solver->currentBubbles();
+    EXPECT_EQ(1u, bubbles.size()) << c.name << " at t = " << run.state.time;
+    if (bubbles.size() != 1) break;
+    if (run.state.step == 1 && c.from_water) p0 = bubbles[0].mean_pressure;
+    double area = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!(p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas && p.enclosed[i])) continue;
+      double n = 0.0;
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (j != i && isActive(p.kind[j])) n += weight((p.position[j] - p.position[i]).norm(), re);
+      area += l0 * l0 * n0 / n;
+      ++count;
+    }
+    const double equilibrium = count * l0 * l0 * (1.0 - (bubbles[0].mean_pressure - p0) / stiffness);
+    out.worst = std::max(out.worst, std::abs(area / equilibrium - 1.0));
+    out.area_loss = 1.0 - area / (count * l0 * l0);
+    out.pressure = bubbles[0].mean_pressure;
+  }
+  return out;
+}
+
+}  // namespace
+
+// Measured over the first 30 ms (0.03 s; P_B 484-793 Pa against 564 Pa hydrostatic at the centre):
+//  * the stiff rows (gas_pressure_memory = true) from the water's pressure: worst 0.62 %, the area 0.79 % below the
+//    lattice's at 30 ms; from 0 Pa the bubble breathes and reads 2.1 %;
+//  * the soft rows (the mixed source without the memory term, which settle at gamma rho_g c^2 delta, gamma = 0.01):
+//    the area 25 % below the lattice's at 30 ms, 24.9 % from its stiff equilibrium: the issue's "100x too soft".
+// Past 30 ms the stiff bubble, whose gas follows the water, creeps up (7 mm by 0.1 s) while its P_B climbs to
+// 1,474 Pa, and the measure departs from its equilibrium by 1.0 % at 60 ms and 2.3 % at 0.1 s (docs/validation.md).
+struct AreaBound {
+  AreaCase setup;
+  double low, high;  // the bounds on the worst |A / A_eq - 1| over 30 ms
+};
+
+class BubbleArea : public ::testing::TestWithParam<AreaBound> {};
+
+TEST_P(BubbleArea, TheBubblesAreaAgainstItsCompressedEquilibrium) {
+  const AreaBound& c = GetParam();
+  const AreaRecord r = measure(c.setup, 0.03);
+  EXPECT_GE(r.worst, c.low) << c.setup.name << ": area loss " << r.area_loss << ", P_B " << r.pressure << " Pa";
+  EXPECT_LT(r.worst, c.high) << c.setup.name << ": area loss " << r.area_loss << ", P_B " << r.pressure << " Pa";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rows, BubbleArea,
+    ::testing::Values(
+        AreaBound{{"stiff", "scheme = \"stabilised\"\ncollision_distance = 0.8\ngas_pressure_memory = true\n", true},
+                  0.0, 0.01},
+        AreaBound{{"soft", "scheme = \"stabilised\"\ncollision_distance = 0.8\n", true}, 0.15, 0.40}),
+    [](const ::testing::TestParamInfo<AreaBound>& info) { return std::string(info.param.setup.name); });
