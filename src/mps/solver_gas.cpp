@@ -316,15 +316,13 @@ void MpsSolver<D>::moveBubbleGas(double dt) {
   // numerics.bubble_gas_wall_stop (a guard, counted): the gas does not follow the water into a wall.
   const double wall_stop =
       config_.numerics.bubble_gas_wall_stop ? config_.numerics.collision_distance * constants_.l0 : 0.0;
-  if (config_.numerics.bubble_gas_motion == Motion::FollowVoid) {
-    const auto translation =
-        voidTranslation<D>(state_.particles, roles_, regions_.region_of, regions_.regionCount(), constants_.l0);
-    report_.bubble_gas_wall_stops = extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt,
-                                                                 &translation, &regions_.region_of, wall_stop);
-    return;
-  }
-  report_.bubble_gas_wall_stops =
-      extendVelocityIntoBubbles<D>(state_.particles, near_neighbours_, roles_, re, dt, nullptr, nullptr, wall_stop);
+  const bool follow_void = config_.numerics.bubble_gas_motion == Motion::FollowVoid;
+  std::vector<std::optional<Vec<D>>> translation;
+  if (follow_void)
+    translation = voidTranslation<D>(state_.particles, roles_, regions_.region_of, regions_.regionCount(), constants_.l0);
+  report_.bubble_gas_wall_stops = extendVelocityIntoBubbles<D>(
+      state_.particles, near_neighbours_, roles_, re, dt, follow_void ? &translation : nullptr,
+      follow_void ? &regions_.region_of : nullptr, wall_stop);
 }
 
 #define MISTFALL_INSTANTIATE(D)                              \
