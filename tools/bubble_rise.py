@@ -8,8 +8,10 @@ fitted (least squares, Kasa's algebraic fit) to the edge of the columns within 3
 highest one.
 Rise speeds: the least-squares slopes of the centroid's and the apex's height against time. The law for large
 two-dimensional (cylindrical-cap) bubbles, U = 0.5 (g R)^(1/2) (Collins 1965), is evaluated at the median nose
-radius and at --radius (the initial radius). Prints a summary; exit codes: 0 done; 1 bad input, with a one-line
-message on stderr. Needs Debian's python3-numpy (`make deps`); run it with /usr/bin/python3.
+radius and at --radius (the initial radius). With --windows W it also prints, per window of W seconds, the apex's
+and the centroid's speed and their Froude numbers U/(g R)^(1/2) at the window's median nose radius (the law: 0.5),
+which show whether the rise has a steady part at all. Prints a summary; exit codes: 0 done; 1 bad input, with a
+one-line message on stderr. Needs Debian's python3-numpy (`make deps`); run it with /usr/bin/python3.
 """
 import os
 import sys
@@ -44,6 +46,25 @@ def nose_radius(gas_points, l0):
     return top.max(), float(np.sqrt(r2)), half
 
 
+def froude_by_window(rows, width, gravity):
+    """Per window of `width` seconds over the rows of measure(): (start, apex speed, centroid speed, median nose
+    radius, apex Froude number U/(g R)^(1/2), centroid Froude number); windows with fewer than 4 frames or no nose
+    radius are left out. The law's Froude number is 0.5."""
+    t = rows[:, 0]
+    out = []
+    start = t[0]
+    while start < t[-1] - 1e-12:
+        inside = (t >= start - 1e-9) & (t < start + width - 1e-9)
+        radius = np.nanmedian(rows[inside, 3]) if inside.sum() >= 4 and np.isfinite(rows[inside, 3]).any() else np.nan
+        if np.isfinite(radius):
+            apex = np.polyfit(t[inside], rows[inside, 2], 1)[0]
+            centroid = np.polyfit(t[inside], rows[inside, 1], 1)[0]
+            scale = np.sqrt(gravity * radius)
+            out.append((start, apex, centroid, radius, apex / scale, centroid / scale))
+        start += width
+    return np.array(out).reshape(-1, 6)
+
+
 def measure(run_dir, t_from, t_to, below, spacing):
     rows = []  # (t, centroid y, apex y, nose radius, half-width)
     for t, path in read_pvd(run_dir):
@@ -72,6 +93,9 @@ def main():
                     help="gas above this height (m) is left out (default 0.145: under bubble_rise's surface)")
     ap.add_argument("--radius", type=float, default=0.0225, help="the bubble's initial radius (m; default 0.0225)")
     ap.add_argument("--gravity", type=float, default=9.81, help="g (m/s^2; default 9.81)")
+    ap.add_argument("--windows", type=float, default=0.0,
+                    help="also print the apex's and the centroid's Froude number U/(g R)^(1/2) in windows of this "
+                         "many seconds (the law: 0.5; default 0: none)")
     args = ap.parse_args()
     try:
         if not os.path.isdir(args.run_dir):
@@ -80,6 +104,8 @@ def main():
         _, dimension, spacing = read_case(args.run_dir)
         if dimension != 2 or spacing is None:
             raise PlotError(f"{args.run_dir}/case.toml: a 2D case with [numerics] particle_spacing is needed")
+        if args.windows < 0:
+            raise PlotError(f"--windows {args.windows}: a window is a positive number of seconds (0: none)")
         rows = measure(args.run_dir, args.t_from, args.t_to, args.below, spacing)
     except PlotError as e:
         print(f"bubble_rise: {e}", file=sys.stderr)
@@ -97,6 +123,13 @@ def main():
         law = 0.5 * np.sqrt(args.gravity * r)
         print(f"law 0.5 (g R)^(1/2), R = {name} radius {r * 100:.2f} cm: {law:.4f} m/s; "
               f"centroid {100 * (centroid_speed - law) / law:+.1f} %")
+    law = 0.5 * np.sqrt(args.gravity * radius)
+    print(f"law at the measured nose radius: apex {100 * (apex_speed - law) / law:+.1f} %")
+    if args.windows > 0:
+        print("window [s]      apex, centroid [m/s]  nose R [cm]  Froude apex, centroid (law 0.5)")
+        for start, apex, centroid, r, fr_apex, fr_centroid in froude_by_window(rows, args.windows, args.gravity):
+            print(f"{start:.3f}-{start + args.windows:.3f}   {apex:6.3f} {centroid:6.3f}        {r * 100:5.2f}"
+                  f"        {fr_apex:6.3f} {fr_centroid:6.3f}")
 
 
 if __name__ == "__main__":
