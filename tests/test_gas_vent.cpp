@@ -252,6 +252,43 @@ TEST(GasVent, AirEnteringAVentJoinsItsColumnsLineOrLeavesWhereItWouldCrowdIt) {
   EXPECT_EQ(0, found_b);
 }
 
+// numerics.vent_crowding_at_mouth: as above, the top vent's first column (x = 0.005) moves out at 0.3 m/s, and air
+// at (0.0083, 0.3015) enters the box (inner face y = 0.30). Air of the domain sits just out of the box in that
+// column, at (0.0052, 0.2990), 0.25 l0 below where the entering air lands on the column's line. Without the key the
+// entering air joins the column there (the pair of the 5 mm waterfall's roof vent, docs/waterfall.md); with it, it
+// leaves crowded.
+TEST(GasVent, AirEnteringAVentNextToAirJustOutOfItsMouthLeavesWithTheKey) {
+  for (const bool key : {false, true}) {
+    SCOPED_TRACE(key ? "vent_crowding_at_mouth = true" : "without the key");
+    Exchange e;
+    if (key) e.config.numerics.vent_crowding_at_mouth = true;
+    std::size_t a = e.p.size(), b = e.p.size();
+    for (std::size_t i = 0; i < e.p.size(); ++i) {
+      if (e.vent[i] >= 0 || e.p.phase[i] != Phase::Gas) continue;
+      if (std::abs(e.p.position[i][0] - 0.005) < 1e-9 && e.p.position[i][1] > 0.28)
+        e.p.velocity[i] = Vec<2>(0.0, 0.3);
+      if ((e.p.position[i] - Vec<2>(0.045, 0.255)).norm() < 1e-9) a = i;
+      if ((e.p.position[i] - Vec<2>(0.055, 0.255)).norm() < 1e-9) b = i;
+    }
+    ASSERT_LT(a, e.p.size());
+    ASSERT_LT(b, e.p.size());
+    e.p.position[a] = Vec<2>(0.0083, 0.3015);  // entering
+    e.p.position[b] = Vec<2>(0.0052, 0.2990);  // just out of the mouth
+    e.p.velocity[b] = Vec<2>(0.0, 0.3);
+    const std::uint64_t id_a = e.p.id[a];
+    const VentExchange x = exchangeVentGas<2>(e.p, e.config, e.vent, e.start, 0.02, 1.2, Vec<2>(0.0, -9.81));
+    EXPECT_EQ(key ? 1 : 0, x.gas_crowded_out);
+    int found = 0;
+    for (std::size_t i = 0; i < e.p.size(); ++i) {
+      if (e.p.id[i] != id_a) continue;
+      ++found;
+      EXPECT_NEAR(0.005, e.p.position[i][0], 1e-12);  // on the column's line, 0.25 l0 from the air below it
+      EXPECT_NEAR(0.3015, e.p.position[i][1], 1e-12);
+    }
+    EXPECT_EQ(key ? 0 : 1, found);
+  }
+}
+
 TEST(GasVent, GasPastTheOuterFaceLeaves) {
   Exchange e;
   // The air below the bottom vent's columns at x = 0.005 and 0.015 moves down at 0.4 m/s: in 0.02 s those two

@@ -252,6 +252,9 @@ struct NumericsConfig {
   // A vent's column drawn inward onto liquid at its mouth is held (gas_vent.hpp; a guard, counted:
   // vent_liquid_stops in diagnostics.csv).
   bool vent_liquid_stop = false;
+  // Gas entering a vent's box also leaves crowded where it would lie within l0/2 of the domain's gas just in front of
+  // the box's inner face, in its column (gas_vent.cpp placeEnteringGas; counted in vent_crowded_out).
+  bool vent_crowding_at_mouth = false;
   // How a bubble's gas moves (docs/two-phase.md). FollowLiquid: with the liquid's velocity extended into the bubble,
   // re-spaced in position by the gas system. OwnPressure: like open gas, by its own pressure gradient from the gas
   // system (the paper's single-phase view of the gas), velocity and position.

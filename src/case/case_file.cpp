@@ -146,7 +146,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "bubble_initial_pressure", "bubble_divergence",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
-                "collision_wall_limit", "vent_liquid_stop", "collision_passes"});
+                "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -176,6 +176,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.boolean(nm, np, "collision_wall_limit", n.collision_wall_limit);
   rd.integer(nm, np, "collision_passes", 1, 10, "[1, 10]", n.collision_passes);
   rd.boolean(nm, np, "vent_liquid_stop", n.vent_liquid_stop);
+  rd.boolean(nm, np, "vent_crowding_at_mouth", n.vent_crowding_at_mouth);
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)
     n.pressure_source = s == 0 ? PressureSource::Standard : PressureSource::Mixed;
   rd.number(nm, np, "source_relaxation", {0.0, 1.0, false, false}, n.source_relaxation);

@@ -64,11 +64,14 @@ struct Columns {
 // roof vent, at most frames), and when the flow turned such a pair came back into the domain at twice n0 and the
 // gas correction threw it out at 100 m/s (docs/two-phase.md, twentieth session). (Snapping along the vent too, onto
 // the column's sites l0 apart, removed the air arriving up to l0/2 early behind a column: the duct's air, drawn by
-// the gap, left at 0.35 m/s instead of 0.2.)
+// the gap, left at 0.35 m/s instead of 0.2.) With `at_mouth` (numerics.vent_crowding_at_mouth) the domain's gas
+// within l0/2 in front of the inner face counts too: gas that went back into the roof vent was put on its column's
+// line 0.04 l0 from gas that had just left the box there, and the pair threw one of them across the 5 mm waterfall
+// at 2,700 m/s (docs/waterfall.md, thirty-seventh session).
 template <int D>
 std::int64_t placeEnteringGas(Particles<D>& p, const Columns<D>& cols, const Vent& vent, std::size_t v,
                               const std::vector<int>& start_vent, const std::vector<double>& un, double l0,
-                              std::vector<char>& remove) {
+                              bool at_mouth, std::vector<char>& remove) {
   const int a = vent.axis;
   const std::size_t n = start_vent.size();
   // Each column's gas along the vent's axis (its own, then what joins it).
@@ -77,10 +80,11 @@ std::int64_t placeEnteringGas(Particles<D>& p, const Columns<D>& cols, const Ven
   for (std::size_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid || p.phase[i] != Phase::Gas) continue;
     const double xi = vent.sign * p.position[i][a];
-    if (xi < cols.inner || xi >= cols.outer) continue;
+    const bool mouth = at_mouth && xi < cols.inner && xi >= cols.inner - 0.5 * l0;  // gas just out of the box
+    if (!mouth && (xi < cols.inner || xi >= cols.outer)) continue;
     const int col = cols.of(p.position[i], vent, l0);
     if (col < 0) continue;
-    if (start_vent[i] == static_cast<int>(v)) held[col].push_back(xi);
+    if (start_vent[i] == static_cast<int>(v) || mouth) held[col].push_back(xi);
     else if (start_vent[i] < 0) entering.emplace_back(i, col);
   }
   std::int64_t left = 0;
@@ -200,7 +204,8 @@ VentExchange exchangeVentGas(Particles<D>& p, const CaseConfig& c, const std::ve
       p.velocity[i][a] = vent.sign * un[col];
       p.position[i] = start[i] + dt * p.velocity[i];
     }
-    const std::int64_t left = placeEnteringGas<D>(p, cols, vent, v, start_vent, un, l0, remove);
+    const std::int64_t left =
+        placeEnteringGas<D>(p, cols, vent, v, start_vent, un, l0, c.numerics.vent_crowding_at_mouth, remove);
     exchange.gas_out += left;
     exchange.gas_crowded_out += left;
     exchange.gas_out_by_vent[v] += left;
