@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/case_file.hpp"
@@ -166,6 +167,20 @@ struct Exchange {
   std::vector<Vec<2>> start = p.position;
 };
 
+// The air in front of the top vent's first column (x = 0.005) moving out at 0.3 m/s, and two air particles of the
+// domain (at (0.045, 0.255) and (0.055, 0.255)) for a test to place: their indices (the particle count if missing).
+std::pair<std::size_t, std::size_t> columnOutAndTwoAirParticles(Exchange& e) {
+  std::size_t a = e.p.size(), b = e.p.size();
+  for (std::size_t i = 0; i < e.p.size(); ++i) {
+    if (e.vent[i] >= 0 || e.p.phase[i] != Phase::Gas) continue;
+    if (std::abs(e.p.position[i][0] - 0.005) < 1e-9 && e.p.position[i][1] > 0.28)
+      e.p.velocity[i] = Vec<2>(0.0, 0.3);
+    if ((e.p.position[i] - Vec<2>(0.045, 0.255)).norm() < 1e-9) a = i;
+    if ((e.p.position[i] - Vec<2>(0.055, 0.255)).norm() < 1e-9) b = i;
+  }
+  return {a, b};
+}
+
 }  // namespace
 
 TEST(GasVent, SetUpFillsTheVentBoxesWithGasAtRest) {
@@ -217,14 +232,7 @@ TEST(GasVent, ColumnsFollowTheAirInFrontAndTheOuterFaceCreatesALayerWhenOneFits)
 // entered beside it at (0.0021, 0.3012), 0.23 l0 below it once on the line, leaves through the vent (counted).
 TEST(GasVent, AirEnteringAVentJoinsItsColumnsLineOrLeavesWhereItWouldCrowdIt) {
   Exchange e;
-  std::size_t a = e.p.size(), b = e.p.size();
-  for (std::size_t i = 0; i < e.p.size(); ++i) {
-    if (e.vent[i] >= 0 || e.p.phase[i] != Phase::Gas) continue;
-    if (std::abs(e.p.position[i][0] - 0.005) < 1e-9 && e.p.position[i][1] > 0.28)
-      e.p.velocity[i] = Vec<2>(0.0, 0.3);
-    if ((e.p.position[i] - Vec<2>(0.045, 0.255)).norm() < 1e-9) a = i;
-    if ((e.p.position[i] - Vec<2>(0.055, 0.255)).norm() < 1e-9) b = i;
-  }
+  const auto [a, b] = columnOutAndTwoAirParticles(e);
   ASSERT_LT(a, e.p.size());
   ASSERT_LT(b, e.p.size());
   e.p.position[a] = Vec<2>(0.0083, 0.3035);
@@ -262,14 +270,7 @@ TEST(GasVent, AirEnteringAVentNextToAirJustOutOfItsMouthLeavesWithTheKey) {
     SCOPED_TRACE(key ? "vent_crowding_at_mouth = true" : "without the key");
     Exchange e;
     if (key) e.config.numerics.vent_crowding_at_mouth = true;
-    std::size_t a = e.p.size(), b = e.p.size();
-    for (std::size_t i = 0; i < e.p.size(); ++i) {
-      if (e.vent[i] >= 0 || e.p.phase[i] != Phase::Gas) continue;
-      if (std::abs(e.p.position[i][0] - 0.005) < 1e-9 && e.p.position[i][1] > 0.28)
-        e.p.velocity[i] = Vec<2>(0.0, 0.3);
-      if ((e.p.position[i] - Vec<2>(0.045, 0.255)).norm() < 1e-9) a = i;
-      if ((e.p.position[i] - Vec<2>(0.055, 0.255)).norm() < 1e-9) b = i;
-    }
+    const auto [a, b] = columnOutAndTwoAirParticles(e);
     ASSERT_LT(a, e.p.size());
     ASSERT_LT(b, e.p.size());
     e.p.position[a] = Vec<2>(0.0083, 0.3015);  // entering
