@@ -65,16 +65,21 @@ def froude_by_window(rows, width, gravity):
     return np.array(out).reshape(-1, 6)
 
 
-def measure(run_dir, t_from, t_to, below, spacing):
-    rows = []  # (t, centroid y, apex y, nose radius, half-width)
+def bubble_frames(run_dir, t_from, t_to):
+    """(t, the frame's arrays, its points' (x, y), the enclosed gas's mask) of each frame in [t_from, t_to]."""
     for t, path in read_pvd(run_dir):
         if not t_from - 1e-9 <= t <= t_to + 1e-9:
             continue
         _, a = read_vtp(path)
         if "enclosed" not in a:
             raise PlotError(f"{path} has no 'enclosed' array (written before bubbles were marked)")
-        points = a["Points"][:, :2]
-        gas = (a["phase"] == 1) & (a["kind"] == 0) & (a["enclosed"] == 1) & (points[:, 1] < below)
+        yield t, a, a["Points"][:, :2], (a["phase"] == 1) & (a["kind"] == 0) & (a["enclosed"] == 1)
+
+
+def measure(run_dir, t_from, t_to, below, spacing):
+    rows = []  # (t, centroid y, apex y, nose radius, half-width)
+    for t, _, points, enclosed in bubble_frames(run_dir, t_from, t_to):
+        gas = enclosed & (points[:, 1] < below)
         if gas.sum() < 6:
             continue
         apex, radius, half = nose_radius(points[gas], spacing)

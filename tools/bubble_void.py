@@ -27,7 +27,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_frames import Parser, PlotError, read_case, read_pvd, read_vtp  # noqa: E402
+from bubble_rise import bubble_frames  # noqa: E402
+from plot_frames import Parser, PlotError, read_case, read_pvd  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -147,14 +148,7 @@ def measure(run_dir, t_from, t_to, l0, sample, reach):
     """Rows (t, N, P_B, gas cells' area, cavity's area, open) of the frames in [t_from, t_to] holding a bubble."""
     pressures = bubble_pressures(run_dir)
     rows = []
-    for t, path in read_pvd(run_dir):
-        if not t_from - 1e-9 <= t <= t_to + 1e-9:
-            continue
-        _, a = read_vtp(path)
-        if "enclosed" not in a:
-            raise PlotError(f"{path} has no 'enclosed' array (written before bubbles were marked)")
-        points = a["Points"][:, :2]
-        gas = (a["phase"] == 1) & (a["kind"] == 0) & (a["enclosed"] == 1)
+    for t, a, points, gas in bubble_frames(run_dir, t_from, t_to):
         if gas.sum() == 0:
             continue
         bubble = largest_bubble(points, gas, l0)
