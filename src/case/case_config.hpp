@@ -222,6 +222,13 @@ struct NumericsConfig {
   // velocity through the interface, the bubble's volume change (docs/two-phase.md: with the memory term a bubble at
   // rest without gravity rings up from round-off with "interface", e-folding in 0.8 ms, and stays at rest with this).
   bool bubble_divergence_whole = false;
+  // "joined" (experimental, 2D, two systems): the empty cavity a bubble's gas leaves in the water is part of the
+  // bubble (bubble_cavity.hpp): the water bordering it joins the bubble's pressure unknown with its divergence (not
+  // its truncated density term), the cavity's area counts in the bubble's density term, and the gas system's bubble
+  // rows are never a free surface and take the whole density term (gamma = 1), so the gas spreads into the cavity.
+  // false ("none", the default): the cavity's edge water is a free surface at the surface pressure, and no row sees
+  // the cavity (docs/validation.md: the stiff coarse bubble's void +104 % at 0.1 s).
+  bool bubble_cavity_joined = false;
   // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.

@@ -143,7 +143,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_initial_pressure", "bubble_divergence",
+                "bubble_initial_pressure", "bubble_divergence", "bubble_cavity",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
                 "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes"});
@@ -232,6 +232,13 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "bubble_regularisation", {0.0, 1e6, false, false}, n.bubble_regularisation);
   if (int s = rd.choice(nm, np, "coupling", {"two_systems", "one_equation"}); s >= 0)
     n.coupling = s == 0 ? NumericsConfig::Coupling::TwoSystems : NumericsConfig::Coupling::OneEquation;
+  if (int s = rd.choice(nm, np, "bubble_cavity", {"none", "joined"}); s >= 0) n.bubble_cavity_joined = s == 1;
+  if (n.bubble_cavity_joined && c.dimension != 2)
+    rd.fail("numerics.bubble_cavity = \"joined\" is built for 2D cases (its cavity is found on a 2D grid: "
+            "src/mps/bubble_cavity.hpp); this case has dimension = " + std::to_string(c.dimension));
+  if (n.bubble_cavity_joined && n.coupling == NumericsConfig::Coupling::OneEquation)
+    rd.fail("numerics.bubble_cavity = \"joined\" needs numerics.coupling = \"two_systems\" (the one equation has no "
+            "bubble unknown to join)");
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");

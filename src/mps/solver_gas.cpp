@@ -59,7 +59,11 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     problem_.takes_part[i] = roles_.inGasSystem(i) || roles_.gas_side_wall[i];
     if (mirrored && (isMirroredWall(p.kind[i]) || mirroredLiquid(i))) problem_.takes_part[i] = 0;  // known part below
     const bool dense = gas_number_density_[i] >= beta_n0;
-    problem_.unknown[i] = problem_.takes_part[i] && (closed || (dense && hasFullNeighbourhood(i, active_flags)));
+    // numerics.bubble_cavity = "joined": a bubble's gas is never a free surface (at a cavity's edge it would be held
+    // at p = 0 while its neighbours are drawn to it, instead of spreading into the cavity)
+    const bool joined_bubble = config_.numerics.bubble_cavity_joined && roles_.enclosed_gas[i];
+    problem_.unknown[i] = problem_.takes_part[i] &&
+                          (closed || joined_bubble || (dense && hasFullNeighbourhood(i, active_flags)));
     if (problem_.takes_part[i] && !closed && dense && !problem_.unknown[i]) ++report_.neighbour_surfaces;
     // (mirrored walls' rest enters through mirroredWallTerm below; the liquid's velocity stays in the divergence)
     problem_.carries_velocity[i] = isActive(p.kind[i]) && !(mirrored && isMirroredWall(p.kind[i]));
@@ -98,6 +102,15 @@ void MpsSolver<D>::solveGasPressure(double dt) {
     for (std::int64_t i = 0; i < n; ++i)
       if (roles_.open_gas[i] && problem_.unknown[i])
         problem_.extra_rhs[i] = compressibleMemoryTerm(source, p.pressure[i], dt, problem_.sound_speed[i]);
+  }
+  // numerics.bubble_cavity = "joined": a bubble's rows take the whole density term (gamma = 1), so the re-spacing
+  // spreads its gas through the bubble's void, cavity included, each step (its pressure is P_B's, not these rows')
+  if (config_.numerics.bubble_cavity_joined) {
+    if (problem_.extra_rhs.empty()) problem_.extra_rhs.assign(n, 0.0);
+    for (std::int64_t i = 0; i < n; ++i)
+      if (roles_.enclosed_gas[i] && problem_.unknown[i])
+        problem_.extra_rhs[i] += (1.0 - source.relaxation) * gas.density / (dt * dt) *
+                                 (gas_number_density_[i] - constants_.n0) / constants_.n0;
   }
   // numerics.gas_operators = "stabilised": the known part of each row from the walls (wall_mirror.hpp: hydrostatic
   // and the walls' rest in the divergence) and from the liquid (hydrostatic only: its velocity is in the divergence).

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mps/bubble_cavity.hpp"
 #include "mps/bubble_pressure.hpp"
 #include "mps/gradient.hpp"
 #include "mps/inflow_pressure.hpp"
@@ -85,6 +86,23 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     }
   }
   problem_.sourceless = harmonicInflowRows<D>(p, config_);  // [[inflow]] pressure = "harmonic"
+  // numerics.bubble_cavity = "joined" (bubble_cavity.hpp): the water bordering a bubble's cavity joins its unknown
+  // (incompressible, as its gas's rows), keeping its divergence; the cavity's area counts in the density term below
+  std::vector<double> cavity_area(group_shift.size(), 0.0);
+  std::vector<std::int32_t> cavity_edge;
+  if (config_.numerics.bubble_cavity_joined)
+    for (std::size_t g = 0; g < group_shift.size(); ++g) {
+      const BubbleCavity cavity = findBubbleCavity<D>(p, group_of, static_cast<std::int32_t>(g), constants_.l0);
+      if (cavity.open) continue;
+      cavity_area[g] = cavity.area;
+      for (const auto k : cavity.edge) {
+        if (!problem_.takes_part[k]) continue;
+        problem_.unknown[k] = 1;
+        problem_.sound_speed[k] = std::numeric_limits<double>::infinity();
+        group_of[k] = static_cast<std::int32_t>(g);
+        cavity_edge.push_back(k);
+      }
+    }
   // numerics.bubble_divergence = "whole_bubble": a bubble's rows count its gas's velocity too (pressure_poisson.hpp)
   if (config_.numerics.bubble_divergence_whole)
     problem_.velocity_group = group_of;
@@ -92,9 +110,19 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
     problem_.velocity_group.clear();
   if (stabilised) stabilisedPressureTerms(dt);
   const PressureSourceTerm source = sourceTermFor(config_.numerics, dt);  // pressure_poisson.hpp
+  // the cavity's edge water: its number density is short by the cavity, which its bubble's row counts as area
+  if (!cavity_edge.empty()) {
+    if (problem_.extra_rhs.empty()) problem_.extra_rhs.assign(n, 0.0);
+    for (const auto k : cavity_edge)
+      problem_.extra_rhs[k] -= source.relaxation * liquid.density / (dt * dt) *
+                               (p.number_density[k] - constants_.n0) / constants_.n0;
+  }
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
+  for (std::size_t g = 0; g < cavity_area.size(); ++g)  // the cavity as gas expanded by A_c / l0^2 cells
+    lumped_.rhs[lumped_.first_group_row + static_cast<std::int64_t>(g)] -=
+        source.relaxation * liquid.density / (dt * dt) * cavity_area[g] / (constants_.l0 * constants_.l0);
   // eq. (17)'s memory on each bubble's row (pressure_poisson.hpp): its shift times its pressure of the last step;
   // the density-drift term's share gamma of the shift times the gas's reference pressure, so that the row settles at
   // P_0 + rho_g c^2 delta, not at rho_g c^2 delta, for gas whose spacing is that of P_0 (bubble_initial_pressure)
