@@ -24,22 +24,22 @@
 namespace mistfall {
 
 struct BubbleCavity {
-  double area = 0.0;                // A_c [m^2]
+  double cells = 0.0;               // the area the bubble's gas covers (its Voronoi cells) [m^2]
+  double area = 0.0;                // A_c, the cavity's [m^2]
   bool open = false;                // reached the grid's edge: not a cavity of this bubble
   std::vector<std::int32_t> edge;   // the water particles bordering it
 };
 
-// The cavity of the bubble whose gas particles have group[i] == g (gas phase).
-template <int D>
-BubbleCavity findBubbleCavity(const Particles<D>& p, const std::vector<std::int32_t>& group, std::int32_t g,
-                              double l0) {
+// The cavity of the bubble whose gas particles are those with isGas(i) (tests/support/bubble_void.hpp measures a
+// bubble's void, cells plus cavity, with it).
+template <int D, class IsGas>
+BubbleCavity findBubbleCavity(const Particles<D>& p, IsGas&& isGas, double l0) {
   BubbleCavity out;
   if constexpr (D != 2) {
     return out;
   } else {
     constexpr double kCover = 0.75, kMargin = 8.0;
     const double h = l0 / 6, cover = kCover * l0;  // 6 samples a spacing
-    auto isGas = [&](std::size_t i) { return group[i] == g && p.phase[i] == Phase::Gas; };
     double lo[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
     double hi[2] = {-lo[0], -lo[1]};
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -67,7 +67,7 @@ BubbleCavity findBubbleCavity(const Particles<D>& p, const std::vector<std::int3
     std::vector<char> reached(nearest.size(), 0), edge(p.size(), 0);
     std::vector<std::size_t> stack;
     for (std::size_t s = 0; s < nearest.size(); ++s)
-      if (owner[s] >= 0 && isGas(static_cast<std::size_t>(owner[s]))) reached[s] = 1, stack.push_back(s);
+      if (owner[s] >= 0 && isGas(static_cast<std::size_t>(owner[s]))) reached[s] = 1, stack.push_back(s), out.cells += h * h;
     const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
     while (!stack.empty()) {
       const std::size_t s = stack.back();

@@ -92,7 +92,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   std::vector<std::int32_t> cavity_edge;
   if (config_.numerics.bubble_cavity_joined)
     for (std::size_t g = 0; g < group_shift.size(); ++g) {
-      const BubbleCavity cavity = findBubbleCavity<D>(p, group_of, static_cast<std::int32_t>(g), constants_.l0);
+      auto inBubble = [&](std::size_t i) { return group_of[i] == static_cast<std::int32_t>(g) && p.phase[i] == Phase::Gas; };
+      const BubbleCavity cavity = findBubbleCavity<D>(p, inBubble, constants_.l0);
       if (cavity.open) continue;
       cavity_area[g] = cavity.area;
       for (const auto k : cavity.edge) {
