@@ -294,6 +294,29 @@ TEST(CaseFileGas, BubbleGasKeys) {
   EXPECT_HAS(errorOf(p.text()), "numerics.bubble_regularisation = -1 is out of range");
 }
 
+// numerics.bubble_surface_tension and surface_tension_fit_radius (solver_liquid.cpp, interface_curvature.hpp):
+// defaults, values, errors.
+TEST(CaseFileGas, BubbleSurfaceTensionKeys) {
+  const CaseConfig d = parseCase(Parts{}.text(), "t.toml");
+  EXPECT_FALSE(d.numerics.bubble_surface_tension);
+  EXPECT_DOUBLE_EQ(d.numerics.surface_tension_fit_radius, 5.0);
+  Parts p;
+  p.numerics += "bubble_surface_tension = \"jump\"\nsurface_tension_fit_radius = 4\n";
+  const CaseConfig c = parseCase(p.text(), "t.toml");
+  EXPECT_TRUE(c.numerics.bubble_surface_tension);
+  EXPECT_DOUBLE_EQ(c.numerics.surface_tension_fit_radius, 4.0);
+  p = Parts{};
+  p.numerics += "bubble_surface_tension = \"csf\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"none\" or \"jump\"");
+  p = Parts{};
+  p.numerics += "surface_tension_fit_radius = 1.5\n";
+  EXPECT_HAS(errorOf(p.text()), "numerics.surface_tension_fit_radius = 1.5 is out of range");
+  p = Parts{};
+  p.numerics += "bubble_surface_tension = \"jump\"\nscheme = \"stabilised\"\npressure_source = \"mixed\"\n"
+                "coupling = \"one_equation\"\n";
+  EXPECT_HAS(errorOf(p.text()), "bubble_surface_tension = \"jump\" needs numerics.coupling = \"two_systems\"");
+}
+
 // numerics.closed_pockets (enclosed_gas.hpp): "small" by default; "unvented" needs a closed gas domain and a vent.
 TEST(CaseFileGas, ClosedPocketsKey) {
   EXPECT_EQ(parseCase(Parts{}.text(), "t.toml").numerics.closed_pockets, NumericsConfig::ClosedPockets::Small);

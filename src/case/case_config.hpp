@@ -229,6 +229,10 @@ struct NumericsConfig {
   // false ("none", the default): the cavity's edge water is a free surface at the surface pressure, and no row sees
   // the cavity (docs/validation.md: the stiff coarse bubble's void +104 % at 0.1 s).
   bool bubble_cavity_joined = false;
+  // numerics.bubble_surface_tension = "jump": a bubble's interface carries the Laplace jump P_B - p_l = sigma kappa
+  // (physics.surface_tension; kappa from src/mps/interface_curvature.hpp, fitted over surface_tension_fit_radius l0)
+  bool bubble_surface_tension = false;
+  double surface_tension_fit_radius = 5.0;
   // The collision model (collision_distance, collision_restitution) once more after the gas system's correction, on
   // gas approaching liquid or walls: the correction can carry gas into a spray droplet, which the gas system holds
   // as a wall with its own pressure (solver_gas.cpp). Counted in `collisions`. false: after the prediction only.

@@ -143,7 +143,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
                 "dispersed_gas_fraction", "gas_speed_limit", "gas_pressure_memory", "dispersed_gas_touch",
-                "bubble_initial_pressure", "bubble_divergence", "bubble_cavity",
+                "bubble_initial_pressure", "bubble_divergence", "bubble_cavity", "bubble_surface_tension",
+                "surface_tension_fit_radius",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
                 "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes"});
@@ -242,6 +243,11 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");
+  if (int s = rd.choice(nm, np, "bubble_surface_tension", {"none", "jump"}); s >= 0) n.bubble_surface_tension = s == 1;
+  rd.number(nm, np, "surface_tension_fit_radius", {2.0, 10.0, false, false}, n.surface_tension_fit_radius);
+  if (n.bubble_surface_tension && n.coupling == NumericsConfig::Coupling::OneEquation)
+    rd.fail("numerics.bubble_surface_tension = \"jump\" needs numerics.coupling = \"two_systems\" (the jump is set "
+            "between a bubble's unknown P_B and the water; the one equation has no bubble unknown)");
   if (int s = rd.choice(nm, np, "closed_pockets", {"small", "unvented"}); s >= 0)
     n.closed_pockets = s == 0 ? NumericsConfig::ClosedPockets::Small : NumericsConfig::ClosedPockets::Unvented;
   if (n.closed_pockets == NumericsConfig::ClosedPockets::Unvented && n.gas_domain != GasDomain::Closed)

@@ -246,6 +246,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
     row.bubble_gas_wall_stops = std::exchange(guards.bubble_gas_wall_stops, 0);
     row.respacing_cuts = std::exchange(guards.respacing_cuts, 0);
+    row.curvature_unfitted = std::exchange(guards.curvature_unfitted, 0);
     row.collision_wall_limits = std::exchange(guards.collision_wall_limits, 0);
     row.vent_liquid_stops = std::exchange(guards.vent_liquid_stops, 0);
     row.neighbour_surfaces = std::exchange(guards.neighbour_surfaces, 0);
@@ -306,6 +307,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
         guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
         guards.bubble_gas_wall_stops += static_cast<std::int64_t>(last.bubble_gas_wall_stops);
         guards.respacing_cuts += static_cast<std::int64_t>(last.respacing_cuts);
+        guards.curvature_unfitted += static_cast<std::int64_t>(last.curvature_unfitted);
         guards.collision_wall_limits += static_cast<std::int64_t>(last.collision_wall_limits);
         guards.vent_liquid_stops += static_cast<std::int64_t>(last.vent_liquid_stops);
         guards.neighbour_surfaces += static_cast<std::int64_t>(last.neighbour_surfaces);

@@ -117,6 +117,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::liquid_wall_collisions>("liquid_wall_collisions"),
     column<&DiagnosticsRow::points_coalesced>("points_coalesced"),
     column<&DiagnosticsRow::bubble_gas_wall_stops>("bubble_gas_wall_stops"),
+    column<&DiagnosticsRow::curvature_unfitted>("curvature_unfitted"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

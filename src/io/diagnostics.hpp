@@ -81,6 +81,9 @@ struct DiagnosticsRow {
   // The gas system's re-spacings of a bubble's gas shortened to numerics.respacing_limit since the previous row
   // (particle-steps; a guard).
   std::int64_t respacing_cuts = 0;
+  // A bubble's interface particles whose curvature had too few points to fit since the previous row
+  // (numerics.bubble_surface_tension; particle-steps; they carry no jump, mps/interface_curvature.hpp).
+  std::int64_t curvature_unfitted = 0;
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).
   std::int64_t collision_wall_limits = 0;

@@ -103,6 +103,7 @@ struct StepReport {
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it or bubble_gas_wall_stop
   std::size_t bubble_gas_wall_stops = 0; // a bubble gas's moves with the water stopped at a wall (bubble_gas_wall_stop)
   std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
+  std::size_t curvature_unfitted = 0;   // bubble interface particles with no curvature fit (bubble_surface_tension)
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)
   std::size_t vent_liquid_stops = 0;   // vent columns held at liquid by numerics.vent_liquid_stop (gas_vent.hpp)
   std::size_t gap_water_floors = 0;    // water pressures raised to the air's by numerics.gap_water_floor
@@ -202,6 +203,7 @@ class MpsSolver {
   void solveGasPressure(double dt);
   void correctGas(double dt);
   Vec<D> stabilisedGasGradient(std::size_t i) const;
+  void applyLaplaceJump(const std::vector<std::int32_t>& group_of);
   bool mirroredLiquid(std::size_t j) const;
   // Gas of a vent at the step's start (gas_vent.hpp): a Dirichlet particle at the ambient pressure.
   bool isVentGas(std::size_t i) const {
@@ -252,6 +254,9 @@ class MpsSolver {
   SurfaceTangents<D> surface_tangents_;      // stabilised: near the free surface, its normal (surface_tangent.hpp)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)
   std::vector<double> gas_pressure_;        // pressures of the gas system (open gas, its walls, dummies)
+  // numerics.bubble_surface_tension: per particle, -sigma kappa on a bubble's interface gas (empty: none). The water
+  // sees that gas at P_B - sigma kappa (the Laplace jump); the gas itself holds P_B.
+  std::vector<double> interface_jump_;
   // The vents' particles at the step's start (gas_vent.hpp): which vent each is in (-1: none; empty without
   // vents) and where it was; they are driven from there, and their gas is the gas system's Dirichlet boundary.
   std::vector<int> vent_at_start_;

@@ -11,6 +11,7 @@
 #include "mps/bubble_pressure.hpp"
 #include "mps/gradient.hpp"
 #include "mps/inflow_pressure.hpp"
+#include "mps/interface_curvature.hpp"
 #include "mps/number_density.hpp"
 #include "mps/solver.hpp"
 #include "mps/wall_mirror.hpp"
@@ -120,6 +121,7 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   }
   assemblePressureSystem<D>(p, p.number_density, neighbours_, constants_, problem_, source, dt, system_,
                             &near_neighbours_);
+  applyLaplaceJump(group_of);
   lumpPressureGroups(system_, group_of, group_shift, lumped_);
   for (std::size_t g = 0; g < cavity_area.size(); ++g)  // the cavity as gas expanded by A_c / l0^2 cells
     lumped_.rhs[lumped_.first_group_row + static_cast<std::int64_t>(g)] -=
@@ -153,6 +155,49 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
   if (!surface_pressure_.empty())
     for (std::size_t i = 0; i < n; ++i)
       if (surface_pressure_[i] != 0.0) p.pressure[i] = surface_pressure_[i];
+}
+
+// numerics.bubble_surface_tension = "jump": the water sees a bubble's interface gas at P_B + s_i, s_i = -sigma kappa_i
+// (Young-Laplace, kappa from interface_curvature.hpp). With p = T P + s, s known, the system A p = b becomes
+//   T^T A T P = T^T (b - A s),
+// so the jump enters the right-hand side before the merge (bubble_pressure.hpp), and the bubble's row still sums its
+// particles' rows. A uniform s would only shift P_B; the jump moves the water where kappa varies along the interface.
+template <int D>
+void MpsSolver<D>::applyLaplaceJump(const std::vector<std::int32_t>& group_of) {
+  interface_jump_.clear();
+  if (!config_.numerics.bubble_surface_tension) return;
+  auto& p = state_.particles;
+  const std::size_t n = p.size();
+  auto bubbleOf = [&](std::int32_t j) { return p.phase[j] == Phase::Gas ? group_of[j] : -1; };
+  auto liquid = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid; };
+  const InterfaceCurvature curvature = interfaceCurvature<D>(
+      p.position, near_neighbours_, constants_.l0, constants_.re_number_density,
+      config_.numerics.surface_tension_fit_radius * constants_.l0, bubbleOf, liquid);
+  report_.curvature_unfitted = curvature.unfitted;
+  interface_jump_.assign(n, 0.0);
+  Eigen::VectorXd jump = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(system_.particle_of.size()));
+  // Gas deeper than the interface's particles meets the water too (within the Laplacian's radius): it takes the
+  // curvature of its nearest interface particle, so that every pair of gas and water carries the jump (with the
+  // interface particles alone, a weightless bubble held 0.54 sigma / R).
+  const double reach2 = constants_.re_laplacian * constants_.re_laplacian;
+  for (std::size_t r = 0; r < system_.particle_of.size(); ++r) {
+    const auto i = system_.particle_of[r];
+    const std::int32_t bubble = bubbleOf(static_cast<std::int32_t>(i));
+    if (bubble < 0) continue;
+    double kappa = curvature.kappa[i];
+    if (!curvature.on_interface[i]) {
+      double nearest = reach2;
+      for (auto s = neighbours_.begin(i); s < neighbours_.end(i); ++s) {
+        const auto j = neighbours_.indices[s];
+        if (!curvature.on_interface[j] || bubbleOf(j) != bubble) continue;
+        const double d2 = (p.position[j] - p.position[i]).squaredNorm();
+        if (d2 < nearest) nearest = d2, kappa = curvature.kappa[j];
+      }
+    }
+    interface_jump_[i] = -config_.physics.surface_tension * kappa;
+    jump[static_cast<Eigen::Index>(r)] = interface_jump_[i];
+  }
+  system_.rhs -= system_.matrix * jump;
 }
 
 // Dummy particles carry no unknown, but they complete the neighbourhood of fluid next to a wall in the pressure
@@ -195,6 +240,13 @@ void MpsSolver<D>::correctLiquid(double dt) {
   };
   auto carriesPressure = [&](std::int32_t j) { return in_system[j] != 0; };
   const bool stabilised = config_.numerics.scheme == Scheme::Stabilised;
+  // the water sees a bubble's interface gas at P_B - sigma kappa (applyLaplaceJump)
+  std::vector<double> jumped;
+  if (!interface_jump_.empty()) {
+    jumped = p.pressure;
+    for (std::int64_t i = 0; i < n; ++i) jumped[i] += interface_jump_[i];
+  }
+  const std::vector<double>& seen = interface_jump_.empty() ? p.pressure : jumped;
   std::size_t fallbacks = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (std::int64_t i = 0; i < n; ++i) {
@@ -205,7 +257,7 @@ void MpsSolver<D>::correctLiquid(double dt) {
       change[i] = -dt / rho * gradient.value;
       continue;
     }
-    change[i] = -dt / rho * gradientAt<D>(i, p.position, p.pressure, near_neighbours_, constants_,
+    change[i] = -dt / rho * gradientAt<D>(i, p.position, seen, near_neighbours_, constants_,
                                           GradientForm::MinimumNeighbour, carriesPressure, solvedPressure);
   }
 #pragma omp parallel for schedule(static)
@@ -221,7 +273,8 @@ void MpsSolver<D>::correctLiquid(double dt) {
   template void MpsSolver<D>::computeLiquidNumberDensity();                                      \
   template void MpsSolver<D>::solveLiquidPressure(double);                                       \
   template void MpsSolver<D>::extrapolateDummyPressure(std::vector<double>&, double, bool) const; \
-  template void MpsSolver<D>::correctLiquid(double);
+  template void MpsSolver<D>::correctLiquid(double);                                             \
+  template void MpsSolver<D>::applyLaplaceJump(const std::vector<std::int32_t>&);
 MISTFALL_INSTANTIATE(2)
 MISTFALL_INSTANTIATE(3)
 #undef MISTFALL_INSTANTIATE
