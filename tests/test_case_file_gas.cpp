@@ -315,6 +315,9 @@ TEST(CaseFileGas, BubbleSurfaceTensionKeys) {
   p.numerics += "bubble_surface_tension = \"jump\"\nscheme = \"stabilised\"\npressure_source = \"mixed\"\n"
                 "coupling = \"one_equation\"\n";
   EXPECT_HAS(errorOf(p.text()), "bubble_surface_tension = \"jump\" needs numerics.coupling = \"two_systems\"");
+  p = Parts{};
+  p.numerics += "bubble_surface_tension = \"jump\"\nscheme = \"stabilised\"\npressure_source = \"mixed\"\n";
+  EXPECT_HAS(errorOf(p.text()), "bubble_surface_tension = \"jump\" is built on numerics.scheme = \"paper\"");
 }
 
 // numerics.closed_pockets (enclosed_gas.hpp): "small" by default; "unvented" needs a closed gas domain and a vent.

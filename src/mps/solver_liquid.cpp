@@ -161,7 +161,8 @@ void MpsSolver<D>::solveLiquidPressure(double dt) {
 // (Young-Laplace, kappa from interface_curvature.hpp). With p = T P + s, s known, the system A p = b becomes
 //   T^T A T P = T^T (b - A s),
 // so the jump enters the right-hand side before the merge (bubble_pressure.hpp), and the bubble's row still sums its
-// particles' rows. A uniform s would only shift P_B; the jump moves the water where kappa varies along the interface.
+// particles' rows. Built on the paper scheme (the case reader refuses the stabilised one, whose gradient does not read
+// interface_jump_). A uniform s would only shift P_B; the jump moves the water where kappa varies along the interface.
 template <int D>
 void MpsSolver<D>::applyLaplaceJump(const std::vector<std::int32_t>& group_of) {
   interface_jump_.clear();

@@ -29,9 +29,7 @@ CorrectedGradient<D> MpsSolver<D>::stabilisedGradient(std::size_t i, bool repuls
   const auto& in_system = roles_.in_liquid_system;
   auto carries = [&](std::int32_t j) { return in_system[j] != 0; };
   auto difference = [&](std::int32_t j, const Vec<D>& rij) {
-    if (isMirroredWall(p.kind[j])) return rho * gravity_.dot(rij);
-    // the water sees a bubble's interface gas at P_B - sigma kappa (applyLaplaceJump)
-    return p.pressure[j] + (interface_jump_.empty() ? 0.0 : interface_jump_[j]) - p.pressure[i];
+    return isMirroredWall(p.kind[j]) ? rho * gravity_.dot(rij) : p.pressure[j] - p.pressure[i];
   };
   return gradientWithRepulsion(i, repulsive, carries, difference);
 }
