@@ -250,8 +250,9 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
             "between a bubble's unknown P_B and the water; the one equation has no bubble unknown)");
   if (n.bubble_surface_tension && n.scheme == Scheme::Stabilised)
     rd.fail("numerics.bubble_surface_tension = \"jump\" is built on numerics.scheme = \"paper\": on the stabilised "
-            "scheme a weightless bubble does not stay at rest even without the jump (water at 0.2 m/s within 0.1 s; "
-            "docs/validation.md)");
+            "scheme a weightless bubble does not stay at rest even without the jump (water at 0.2 m/s within 0.1 s), and "
+            "with bubble_divergence = \"whole_bubble\", at rest without it, the jump rings it up to 4-26 sigma / R "
+            "(docs/validation.md)");
   if (int s = rd.choice(nm, np, "closed_pockets", {"small", "unvented"}); s >= 0)
     n.closed_pockets = s == 0 ? NumericsConfig::ClosedPockets::Small : NumericsConfig::ClosedPockets::Unvented;
   if (n.closed_pockets == NumericsConfig::ClosedPockets::Unvented && n.gas_domain != GasDomain::Closed)
