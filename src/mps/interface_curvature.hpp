@@ -85,11 +85,11 @@ InterfaceCurvature interfaceCurvature(const std::vector<Vec<D>>& position, const
     Vec<D> sum = Vec<D>::Zero();
     double liquid_weight = 0.0, all_weight = 0.0;
     forEachPairWithin<D>(i, position, nl, colour_radius, any, [&](std::int32_t j, const Vec<D>& rij, double r2, double) {
-      const double w = smoothColourWeight(std::sqrt(r2) / colour_radius);
+      const double r = std::sqrt(r2), w = smoothColourWeight(r / colour_radius);
       all_weight += w;
       if (!liquid(j)) return;
       liquid_weight += w;
-      sum += rij * (w / std::sqrt(r2));
+      sum += rij * (w / r);
     });
     if (sum.norm() == 0.0) continue;
     const double fraction = liquid_weight / all_weight;
