@@ -144,6 +144,10 @@ struct NumericsConfig {
   // [l0] a guard: the gas system's re-spacing of a bubble's gas (a move without a velocity) is shortened to at most
   // this in a step (counted: respacing_cuts in diagnostics.csv); 0 = none
   double respacing_limit = 0.0;
+  // numerics.respacing_walls = "slip": the gas system's re-spacing of a bubble's gas loses its component into the
+  // walls within re (wall_slip.hpp; the no-penetration condition on the displacement; counted with the stops:
+  // respacing_wall_stops); "free" (default): it is not told about the walls
+  bool respacing_slip = false;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

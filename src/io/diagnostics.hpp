@@ -72,7 +72,7 @@ struct DiagnosticsRow {
   std::int64_t vent_crowded_out = 0;
   // Position-only displacements stopped at a wall by numerics.shift_wall_stop since the previous row (particle-steps;
   // a guard, mps/wall_stop.hpp): the liquid's shifts, and the gas system's re-spacings of a bubble's gas (these also
-  // by numerics.bubble_gas_wall_stop).
+  // by numerics.bubble_gas_wall_stop, and slid along a wall by numerics.respacing_walls = "slip", mps/wall_slip.hpp).
   std::int64_t shift_wall_stops = 0, respacing_wall_stops = 0;
   // A bubble gas's moves with the water (the velocity extended into the bubble) stopped at a wall by
   // numerics.bubble_gas_wall_stop since the previous row (particle-steps; a guard, mps/bubble_gas_motion.hpp); its

@@ -100,7 +100,7 @@ struct StepReport {
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
   std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
-  std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it or bubble_gas_wall_stop
+  std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it, bubble_gas_wall_stop or respacing_walls
   std::size_t bubble_gas_wall_stops = 0; // a bubble gas's moves with the water stopped at a wall (bubble_gas_wall_stop)
   std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
   std::size_t curvature_unfitted = 0;   // bubble interface particles with no curvature fit (bubble_surface_tension)

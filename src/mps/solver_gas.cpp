@@ -13,6 +13,7 @@
 #include "mps/pair_loop.hpp"
 #include "mps/particle_shifting.hpp"
 #include "mps/wall_mirror.hpp"
+#include "mps/wall_slip.hpp"
 #include "mps/wall_stop.hpp"
 #include "mps/solver.hpp"
 
@@ -241,9 +242,15 @@ void MpsSolver<D>::correctGas(double dt) {
     Vec<D> move = dt * change[i];
     if (respacing && respacing_limit > 0.0 && move.norm() > respacing_limit)
       move *= respacing_limit / move.norm(), ++respacing_cuts;
+    // numerics.respacing_walls = "slip": the re-spacing slides along the walls within re (wall_slip.hpp).
+    bool stopped = false;
+    if (respacing && config_.numerics.respacing_slip)
+      stopped = slideDisplacementAlongWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_,
+                                               constants_.re_number_density, fixed, move);
     if (respacing && wall_stop)
-      stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
-                                          fixed, move);
+      stopped = stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
+                                           fixed, move) || stopped;
+    stops += stopped;
     p.position[i] += move;
   }
   report_.respacing_wall_stops = stops;
