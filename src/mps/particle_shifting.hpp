@@ -20,14 +20,24 @@
 
 namespace mistfall {
 
+// The first moment of particle i's neighbourhood, sum_j r_ij w(|r_ij|) / |r_ij|^2 over the neighbours within re that
+// `include(j)` admits: it points towards where they crowd (the shift's concentration gradient; wall_slip.hpp's
+// wall normal).
+template <int D, class Include>
+Vec<D> neighbourhoodFirstMoment(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+                                Include&& include) {
+  Vec<D> first = Vec<D>::Zero();
+  forEachPairWithin<D>(i, position, nl, re, include,
+                       [&](std::int32_t, const Vec<D>& rij, double r2, double w) { first += rij * (w / r2); });
+  return first;
+}
+
 // delta r_i for particle i moving at `velocity` (P_i given by `normal`, zero for none; see above).
 template <int D, class Include>
 Vec<D> shiftingDisplacement(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
                             const MpsConstants& c, double coefficient, const Vec<D>& velocity, double dt,
                             const Vec<D>& normal, Include&& include) {
-  Vec<D> first = Vec<D>::Zero();
-  forEachPairWithin<D>(i, position, nl, c.re_number_density, include,
-                       [&](std::int32_t, const Vec<D>& rij, double r2, double w) { first += rij * (w / r2); });
+  Vec<D> first = neighbourhoodFirstMoment<D>(i, position, nl, c.re_number_density, include);
   first -= first.dot(normal) * normal;
   return (-coefficient * c.l0 * velocity.norm() * dt * double(D) / c.n0) * first;
 }

@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "mps/pair_loop.hpp"
+#include "mps/particle_shifting.hpp"
 
 namespace mistfall {
 
@@ -24,9 +24,7 @@ namespace mistfall {
 template <int D, class Fixed>
 bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
                                  Fixed&& fixed, Vec<D>& displacement) {
-  Vec<D> moment = Vec<D>::Zero();
-  forEachPairWithin<D>(i, position, nl, re, fixed,
-                       [&](std::int32_t, const Vec<D>& rij, double r2, double w) { moment += rij * (w / r2); });
+  const Vec<D> moment = neighbourhoodFirstMoment<D>(i, position, nl, re, fixed);
   const double size = moment.norm();
   if (size <= 0.0) return false;
   const Vec<D> normal = moment / size;
