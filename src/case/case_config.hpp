@@ -122,6 +122,10 @@ struct NumericsConfig {
   // a fluid particle carries a pressure unknown only if its liquid-side neighbours within the Laplacian radius give
   // at least this fraction of n0 (below it the mirrored walls would dominate its row: it is a free surface)
   double liquid_support_fraction = 0.3;  // 2D; the reader sets 0.2 in 3D (below a container corner's 0.29)
+  // numerics.thin_row_pressure = "liquid": a row made free surface by liquid_support_fraction holds its liquid
+  // neighbours' last pressure continued hydrostatically to it (solver_liquid_stabilised.cpp), not a free surface's
+  // value: a particle crowded into a wall corner is inside the water. false ("surface"): the free surface's value.
+  bool thin_rows_hold_liquid = false;
   // the corrected gradient falls back to the standard form where det(C_i^-1) is below this (1 on a full lattice)
   double gradient_correction_min_determinant = 0.3;
   // K of the repulsive part of the stabilised gradient (pressure_repulsion.hpp): zero in a linear pressure field, so

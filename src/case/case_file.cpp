@@ -137,7 +137,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const std::string np = "numerics";
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
-               {"particle_spacing", "scheme", "liquid_support_fraction", "gradient_correction_min_determinant",
+               {"particle_spacing", "scheme", "liquid_support_fraction", "thin_row_pressure", "gradient_correction_min_determinant",
                 "pressure_repulsion", "particle_shifting", "shift_limit", "shift_wall_stop", "bubble_gas_wall_stop", "respacing_limit", "respacing_walls", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "surface_asymmetry", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
@@ -156,6 +156,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   // one in 2D; an octant: 0.29 in 3D), which is no free surface: 0.3 in 2D, 0.2 in 3D.
   if (c.dimension == 3) n.liquid_support_fraction = 0.2;
   rd.number(nm, np, "liquid_support_fraction", {0.0, 1.0, false, true}, n.liquid_support_fraction);
+  if (int s = rd.choice(nm, np, "thin_row_pressure", {"surface", "liquid"}); s >= 0) n.thin_rows_hold_liquid = s == 1;
   rd.number(nm, np, "gradient_correction_min_determinant", {0.0, 1.0, true, false},
             n.gradient_correction_min_determinant);
   rd.number(nm, np, "pressure_repulsion", {0.0, 10.0, false, false}, n.pressure_repulsion);

@@ -175,6 +175,7 @@ class MpsSolver {
   // numerics.scheme = "stabilised" (solver_liquid_stabilised.cpp)
   void stabilisedPressureTerms(double dt);
   void makeThinRowsFreeSurface();
+  std::optional<double> thinRowLiquidPressure(std::size_t i, double rho) const;
   std::optional<double> bubbleSidePressure(std::size_t i) const;
   void findSurfaceTangents(const std::vector<Vec<D>>& last_gradient);
   void shiftParticles(double dt);
@@ -250,6 +251,7 @@ class MpsSolver {
   GasRegions regions_;
   CouplingRoles roles_;
   PressureProblem problem_;
+  std::vector<char> thin_row_;               // stabilised: rows makeThinRowsFreeSurface made free surface
   std::vector<double> surface_pressure_;     // stabilised: Dirichlet values of free-surface particles (empty: 0)
   SurfaceTangents<D> surface_tangents_;      // stabilised: near the free surface, its normal (surface_tangent.hpp)
   std::vector<double> gas_number_density_;  // n* of the gas system (all particles counted)

@@ -50,11 +50,13 @@ void MpsSolver<D>::makeThinRowsFreeSurface() {
   const double support = config_.numerics.liquid_support_fraction * constants_.n0_laplacian;
   auto fluidSide = [&](std::int32_t j) { return problem_.takes_part[j] != 0 && !roles_.enclosed_gas[j]; };
   std::size_t thin = 0;
+  thin_row_.assign(n, 0);
 #pragma omp parallel for schedule(static) reduction(+ : thin)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.unknown[i] || roles_.enclosed_gas[i] || p.kind[i] != ParticleKind::Fluid) continue;
     if (numberDensityAt<D>(i, p.position, neighbours_, constants_.re_laplacian, fluidSide) < support) {
       problem_.unknown[i] = 0;
+      thin_row_[i] = 1;
       ++thin;
     }
   }
@@ -75,6 +77,32 @@ std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t i) const {
   return sum / weight;
 }
 
+// numerics.thin_row_pressure = "liquid": the Dirichlet value of a thin row (makeThinRowsFreeSurface), the last
+// step's pressure of the liquid within the Laplacian radius continued hydrostatically to it, as the mirrored walls
+// continue a particle's own (wall_mirror.hpp):
+//   p_i = sum_j w_ij (p_j^n + rho g . (r_i - r_j)) / sum_j w_ij.
+// A thin row is thin because walls, not void, fill its neighbourhood: a particle crowded into a corner, with a
+// quadrant of water beside it, or a film on a wall. The free surface's value (half a spacing of the last gradient)
+// gave a corner particle tens of pascals under water at a kilopascal, and the water around pushed it into the walls
+// (LiquidWallCollision.*, docs/waterfall.md, forty-fifth session). A film's liquid is at the surface's pressure, so
+// its rows keep about that. None: no liquid within reach.
+template <int D>
+std::optional<double> MpsSolver<D>::thinRowLiquidPressure(std::size_t i, double rho) const {
+  const auto& p = state_.particles;
+  double sum = 0.0, weight = 0.0;
+  auto liquid = [&](std::int32_t j) {
+    return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid && problem_.takes_part[j] != 0 &&
+           !roles_.enclosed_gas[j];
+  };
+  forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, liquid,
+                       [&](std::int32_t j, const Vec<D>& rij, double, double w) {
+                         sum += w * (p.pressure[j] - rho * gravity_.dot(rij));
+                         weight += w;
+                       });
+  if (weight == 0.0) return std::nullopt;
+  return sum / weight;
+}
+
 template <int D>
 void MpsSolver<D>::stabilisedPressureTerms(double dt) {
   auto& p = state_.particles;
@@ -91,12 +119,17 @@ void MpsSolver<D>::stabilisedPressureTerms(double dt) {
     if (isMirroredWall(p.kind[i]) || (gas_follows && roles_.enclosed_gas[i])) problem_.carries_velocity[i] = 0;
   std::vector<Vec<D>> last_gradient(n, Vec<D>::Zero());
   surface_pressure_.assign(n, 0.0);
+  const bool thin_liquid = config_.numerics.thin_rows_hold_liquid;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!problem_.takes_part[i] || roles_.enclosed_gas[i]) continue;
     last_gradient[i] = stabilisedGradient(i).value;
-    if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid)
-      surface_pressure_[i] = bubbleSidePressure(i).value_or(surfaceParticlePressure<D>(last_gradient[i], constants_.l0));
+    if (!problem_.unknown[i] && p.kind[i] == ParticleKind::Fluid) {
+      const double surface = surfaceParticlePressure<D>(last_gradient[i], constants_.l0);
+      std::optional<double> value = bubbleSidePressure(i);
+      if (!value && thin_liquid && thin_row_[i]) value = thinRowLiquidPressure(static_cast<std::size_t>(i), rho);
+      surface_pressure_[i] = value.value_or(surface);
+    }
   }
   findSurfaceTangents(last_gradient);
   problem_.extra_rhs.assign(n, 0.0);
@@ -185,6 +218,7 @@ void MpsSolver<D>::shiftParticles(double dt) {
   template void MpsSolver<D>::stabilisedPressureTerms(double);                       \
   template void MpsSolver<D>::makeThinRowsFreeSurface();                            \
   template std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t) const; \
+  template std::optional<double> MpsSolver<D>::thinRowLiquidPressure(std::size_t, double) const; \
   template void MpsSolver<D>::shiftParticles(double);                              \
   template void MpsSolver<D>::findSurfaceTangents(const std::vector<Vec<D>>&);
 MISTFALL_INSTANTIATE(2)
