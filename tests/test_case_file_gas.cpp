@@ -320,6 +320,25 @@ TEST(CaseFileGas, BubbleSurfaceTensionKeys) {
   EXPECT_HAS(errorOf(p.text()), "bubble_surface_tension = \"jump\" is built on numerics.scheme = \"paper\"");
 }
 
+// numerics.thin_row_pressure (solver_liquid_stabilised.cpp): "surface" by default; "liquid" on the stabilised
+// scheme's two systems only.
+TEST(CaseFileGas, ThinRowPressureKey) {
+  EXPECT_FALSE(parseCase(Parts{}.text(), "t.toml").numerics.thin_rows_hold_liquid);
+  Parts p;
+  p.numerics += "thin_row_pressure = \"liquid\"\nscheme = \"stabilised\"\npressure_source = \"mixed\"\n";
+  EXPECT_TRUE(parseCase(p.text(), "t.toml").numerics.thin_rows_hold_liquid);
+  p = Parts{};
+  p.numerics += "thin_row_pressure = \"walls\"\n";
+  EXPECT_HAS(errorOf(p.text()), "allowed \"surface\" or \"liquid\"");
+  p = Parts{};
+  p.numerics += "thin_row_pressure = \"liquid\"\n";  // the paper's scheme has no thin rows
+  EXPECT_HAS(errorOf(p.text()), "thin_row_pressure = \"liquid\" needs numerics.scheme = \"stabilised\"");
+  p = Parts{};
+  p.numerics += "thin_row_pressure = \"liquid\"\nscheme = \"stabilised\"\npressure_source = \"mixed\"\n"
+                "coupling = \"one_equation\"\n";
+  EXPECT_HAS(errorOf(p.text()), "thin_row_pressure = \"liquid\" needs numerics.scheme = \"stabilised\"");
+}
+
 // numerics.closed_pockets (enclosed_gas.hpp): "small" by default; "unvented" needs a closed gas domain and a vent.
 TEST(CaseFileGas, ClosedPocketsKey) {
   EXPECT_EQ(parseCase(Parts{}.text(), "t.toml").numerics.closed_pockets, NumericsConfig::ClosedPockets::Small);

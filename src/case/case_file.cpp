@@ -245,6 +245,10 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (n.coupling == NumericsConfig::Coupling::OneEquation && n.scheme != Scheme::Stabilised)
     rd.fail("numerics.coupling = \"one_equation\" is built on numerics.scheme = \"stabilised\" (its mirrored walls, "
             "corrected gradient and consistent Laplacian; docs/two-phase.md)");
+  if (n.thin_rows_hold_liquid && (n.scheme != Scheme::Stabilised || n.coupling != NumericsConfig::Coupling::TwoSystems))
+    rd.fail("numerics.thin_row_pressure = \"liquid\" needs numerics.scheme = \"stabilised\" and numerics.coupling = "
+            "\"two_systems\" (it sets the rows that liquid_support_fraction makes free surface in the stabilised liquid "
+            "system)");
   if (int s = rd.choice(nm, np, "bubble_surface_tension", {"none", "jump"}); s >= 0) n.bubble_surface_tension = s == 1;
   rd.number(nm, np, "surface_tension_fit_radius", {2.0, 10.0, false, false}, n.surface_tension_fit_radius);
   if (n.bubble_surface_tension && n.coupling == NumericsConfig::Coupling::OneEquation)
