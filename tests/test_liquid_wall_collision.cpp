@@ -77,8 +77,6 @@ TEST(LiquidWallCollision, CornerParticleIsNotSwallowedByTheWalls) {
   }
 }
 
-
-
 // numerics.thin_row_pressure = "liquid" without the guard. The corner particle's liquid support falls below
 // liquid_support_fraction as it nears the corner, so its row is made free surface; with the free surface's value
 // (half a spacing of the last gradient: about 40 Pa here, 0.1 m under the surface) the water around pushes it into

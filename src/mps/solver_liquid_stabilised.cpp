@@ -79,7 +79,7 @@ std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t i) const {
 
 // numerics.thin_row_pressure = "liquid": the Dirichlet value of a thin row (makeThinRowsFreeSurface), the last
 // step's pressure of the liquid within the Laplacian radius continued hydrostatically to it, as the mirrored walls
-// continue a particle's own (wall_mirror.hpp):
+// continue a particle's own (wall_mirror.hpp, continuedPressureAt):
 //   p_i = sum_j w_ij (p_j^n + rho g . (r_i - r_j)) / sum_j w_ij.
 // A thin row is thin because walls, not void, fill its neighbourhood: a particle crowded into a corner, with a
 // quadrant of water beside it, or a film on a wall. The free surface's value (half a spacing of the last gradient)
@@ -89,18 +89,12 @@ std::optional<double> MpsSolver<D>::bubbleSidePressure(std::size_t i) const {
 template <int D>
 std::optional<double> MpsSolver<D>::thinRowLiquidPressure(std::size_t i, double rho) const {
   const auto& p = state_.particles;
-  double sum = 0.0, weight = 0.0;
   auto liquid = [&](std::int32_t j) {
     return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid && problem_.takes_part[j] != 0 &&
            !roles_.enclosed_gas[j];
   };
-  forEachPairWithin<D>(i, p.position, neighbours_, constants_.re_laplacian, liquid,
-                       [&](std::int32_t j, const Vec<D>& rij, double, double w) {
-                         sum += w * (p.pressure[j] - rho * gravity_.dot(rij));
-                         weight += w;
-                       });
-  if (weight == 0.0) return std::nullopt;
-  return sum / weight;
+  return continuedPressureAt<D>(i, p.position, p.pressure, neighbours_, constants_.re_laplacian,
+                                [rho](std::int32_t) { return rho; }, gravity_, liquid);
 }
 
 template <int D>

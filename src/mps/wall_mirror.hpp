@@ -15,6 +15,7 @@
 //   p_b = sum_j w_bj (p_j + rho g . (r_b - r_j)) / sum_j w_bj   (Adami et al. eq. (27) at rest).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "mps/pair_loop.hpp"
@@ -42,6 +43,23 @@ double mirroredWallTerm(std::size_t i, const std::vector<Vec<D>>& position, cons
   return c.laplacianFactor() * rho * hydrostatic - rho / dt * divergence * (double(D) / c.n0);
 }
 
+// The pressure of the particles j within re of particle b with carries(j), each continued hydrostatically to b
+// with its density density(j) (Adami et al. eq. (27) at rest):
+//   p_b = sum_j w_bj (p_j + rho_j g . (r_b - r_j)) / sum_j w_bj.
+// None: no such particle within re.
+template <int D, class Density, class Carries>
+std::optional<double> continuedPressureAt(std::size_t b, const std::vector<Vec<D>>& position,
+                                          const std::vector<double>& pressure, const NeighborList& nl, double re,
+                                          Density&& density, const Vec<D>& gravity, Carries&& carries) {
+  double sum = 0.0, sum_w = 0.0;
+  forEachPairWithin<D>(b, position, nl, re, carries, [&](std::int32_t j, const Vec<D>& rbj, double, double w) {
+    sum += w * (pressure[j] - density(j) * gravity.dot(rbj));
+    sum_w += w;
+  });
+  if (sum_w == 0.0) return std::nullopt;
+  return sum / sum_w;
+}
+
 // Sets pressure[b] of every wall and dummy particle b from the fluid particles j with carries(j) (0 without any),
 // each continuing its pressure with its density density(j).
 template <int D, class Density, class Carries>
@@ -52,12 +70,8 @@ void averageMirroredWallPressure(const std::vector<Vec<D>>& position, const std:
 #pragma omp parallel for schedule(static)
   for (std::int64_t b = 0; b < n; ++b) {
     if (!isMirroredWall(kind[b])) continue;
-    double sum = 0.0, sum_w = 0.0;
-    forEachPairWithin<D>(b, position, nl, re, carries, [&](std::int32_t j, const Vec<D>& rbj, double, double w) {
-      sum += w * (pressure[j] - density(j) * gravity.dot(rbj));
-      sum_w += w;
-    });
-    pressure[b] = sum_w > 0.0 ? sum / sum_w : 0.0;
+    pressure[b] = continuedPressureAt<D>(static_cast<std::size_t>(b), position, pressure, nl, re, density, gravity,
+                                         carries).value_or(0.0);
   }
 }
 
