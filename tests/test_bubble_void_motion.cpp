@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "mps/bubble_gas_motion.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "support/coarse_bubble_case.hpp"
 #include "support/run_case.hpp"
 
@@ -60,8 +60,8 @@ struct Disc {
   }
   // The gas's mean velocity after one motion step of `dt` (the extension, with the translation when `follow_void`).
   Vec<2> gasVelocityAfterMotion(bool follow_void) {
-    NeighborSearch<2> search(Vec<2>::Constant(-kHalfWidth - kL0), Vec<2>::Constant(kHalfWidth + kL0), 2.1 * kL0);
-    NeighborList nl;
+    NeighbourSearch<2> search(Vec<2>::Constant(-kHalfWidth - kL0), Vec<2>::Constant(kHalfWidth + kL0), 2.1 * kL0);
+    NeighbourList nl;
     search.build(p.position, p.kind, nl);
     const auto u = voidTranslation<2>(p, roles, region_of, 1, kL0);
     extendVelocityIntoBubbles<2>(p, nl, roles, 2.1 * kL0, 1e-4, follow_void ? &u : nullptr, &region_of);

@@ -213,8 +213,8 @@ TYPED_TEST(Classification, CompressedBlockEdgeIsSurfaceByTheGradient) {
   const Index<D> lo = filled<D>(0), hi = filled<D>(7);
   addBox<D>(p, lo, hi, ParticleKind::Fluid, Phase::Liquid, spacing);
   const MpsConstants c = constantsFor(D);
-  NeighborSearch<D> search(Vec<D>::Zero(), Vec<D>::Constant(8 * spacing), c.re_number_density);
-  NeighborList nl;
+  NeighbourSearch<D> search(Vec<D>::Zero(), Vec<D>::Constant(8 * spacing), c.re_number_density);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   const auto cat = classifyParticles<D>(p, nl, c, {});
   int edge_mid = 0;
@@ -361,8 +361,8 @@ TYPED_TEST(Classification, LongerNeighbourListGivesTheSameCategories) {
   for (std::size_t i = 0; i < p.size(); ++i)
     for (int a = 0; a < D; ++a) p.position[i][a] += jitter(rng);
   const MpsConstants c = constantsFor(D);
-  NeighborSearch<D> search(Vec<D>::Constant(-kL0), Vec<D>::Constant(17 * kL0), c.re_laplacian);
-  NeighborList wide;
+  NeighbourSearch<D> search(Vec<D>::Constant(-kL0), Vec<D>::Constant(17 * kL0), c.re_laplacian);
+  NeighbourList wide;
   search.build(p.position, p.kind, wide);
   const auto from_wide = classifyParticles<D>(p, wide, c, {});
   EXPECT_EQ(categoryBytes(classify<D>(p)), categoryBytes(from_wide));

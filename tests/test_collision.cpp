@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "mps/collision.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 
 using namespace mistfall;
 
@@ -19,14 +19,14 @@ struct Scene {
   std::vector<Vec<2>> position, velocity;
   std::vector<ParticleKind> kind;
   std::vector<double> mass;
-  NeighborList nl;
+  NeighbourList nl;
   Scene(Vec<2> at, Vec<2> u, double m) {
     add(at * kL0, u, ParticleKind::Fluid, m);
     for (int k = -3; k <= 3; ++k) add(Vec<2>(0.0, k * kL0), Vec<2>::Zero(), ParticleKind::Wall, kWater);
   }
   void addWater(Vec<2> at, Vec<2> u) { add(at * kL0, u, ParticleKind::Fluid, kWater); }
   CollisionCount collide(bool wall_limit) {
-    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
     search.build(position, kind, nl);
     return resolveCollisions<2>(position, velocity, kind, mass, nl, CollisionModel{0.8 * kL0, 0.2, wall_limit}, kDt);
   }
@@ -124,7 +124,7 @@ TEST(Collision, FurtherPassesReverseTheApproachesTheFirstMade) {
     s.addWater(Vec<2>(5.6, 0.0), Vec<2>::Zero());      // the air on i's right (its mass set below)
     const std::size_t air = s.position.size() - 1;
     s.mass[air] = kAir;
-    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
     search.build(s.position, s.kind, s.nl);
     const CollisionCount count =
         resolveCollisionPasses<2>(passes, s.position, s.velocity, s.kind, s.mass, s.nl,

@@ -52,14 +52,14 @@ Particles<D> makeLattice(const Index<D>& lo, const Index<D>& hi, Classify&& clas
 }
 
 template <int D>
-NeighborList neighbours(const Particles<D>& p) {
+NeighbourList neighbours(const Particles<D>& p) {
   Vec<D> lo = origin<D>(), hi = origin<D>();
   for (const auto& x : p.position) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  NeighborSearch<D> search(lo, hi, kSearch);
-  NeighborList nl;
+  NeighbourSearch<D> search(lo, hi, kSearch);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   return nl;
 }
@@ -355,9 +355,9 @@ TEST(EnclosedGas, EscapedParticlesAreIgnored) {
     p.add(origin<2>() + kL0 * Vec<2>(x, 0.5), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Gas);
     p.pressure.back() = 1e9;
   }
-  const NeighborList stale = neighbours<2>(p);  // built while the chain was still active
+  const NeighbourList stale = neighbours<2>(p);  // built while the chain was still active
   for (std::size_t i = first_chain; i < p.size(); ++i) p.kind[i] = ParticleKind::Escaped;
-  for (const NeighborList* nl : {&stale, static_cast<const NeighborList*>(nullptr)}) {
+  for (const NeighbourList* nl : {&stale, static_cast<const NeighbourList*>(nullptr)}) {
     GasRegions r;
     findGasRegions<2>(p, nl ? *nl : neighbours<2>(p), kLink, kL0, r);
     expectConsistent<2>(p, r);
@@ -388,7 +388,7 @@ TEST(EnclosedGas, LiquidOnlyHasNoRegions) {
 TEST(EnclosedGas, MismatchedNeighbourListThrows) {
   const auto p = makeLattice<2>(Index<2>::Constant(-2), Index<2>::Constant(2), [](const Index<2>&) { return kGas; });
   GasRegions r;
-  EXPECT_THROW(findGasRegions<2>(p, NeighborList{}, kLink, kL0, r), std::invalid_argument);
+  EXPECT_THROW(findGasRegions<2>(p, NeighbourList{}, kLink, kL0, r), std::invalid_argument);
 }
 
 TEST(EnclosedGas, RandomGasMatchesBruteForce2D) { checkAgainstBruteForce<2>(30); }

@@ -13,7 +13,7 @@
 #include "case/scene.hpp"
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/enclosed_gas.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/entrained_gas_rise.hpp"
 #include "mps/solver.hpp"
 #include "support/run_case.hpp"
@@ -132,8 +132,8 @@ TEST(EntrainedGas, GasJoiningTheWaterTakesItsVelocity) {
     }
   p.add(Vec<2>(0.5, 0.5), Vec<2>(0.0, -3.0), ParticleKind::Fluid, Phase::Gas);
   const std::size_t centre = 3 * 7 + 3, lone = p.size() - 1;
-  NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.7, 0.7), re);
-  NeighborList nl;
+  NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.7, 0.7), re);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   std::vector<char> joined(p.size(), 0);
   joined[centre] = joined[lone] = 1;

@@ -34,8 +34,8 @@ CurvatureRecord measure(double l0, double half, Inside&& inside) {
     bubble.push_back(b);
   });
   const double colour = 2.1 * l0, fit = 5.0 * l0;
-  NeighborSearch<D> search(Vec<D>::Constant(-half - l0), Vec<D>::Constant(half + l0), colour);
-  NeighborList nl;
+  NeighbourSearch<D> search(Vec<D>::Constant(-half - l0), Vec<D>::Constant(half + l0), colour);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   const auto c = interfaceCurvature<D>(
       p.position, nl, l0, colour, fit, [&](std::int32_t j) { return bubble[j]; },

@@ -1,5 +1,5 @@
-// The neighbour list carried over the particles an open boundary removed and made (NeighborSearch::carryOver,
-// neighbor_search.hpp): it holds every pair within the radius, as a new build does, each list in ascending order,
+// The neighbour list carried over the particles an open boundary removed and made (NeighbourSearch::carryOver,
+// neighbour_search.hpp): it holds every pair within the radius, as a new build does, each list in ascending order,
 // with the near list filtered at the build positions; and it refuses what it cannot carry (a particle moved past
 // half the skin, a reordering, a particle gone inactive), leaving the list as it was.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 
 using namespace mistfall;
 
@@ -30,8 +30,8 @@ template <int D>
 struct Changed {
   std::mt19937_64 rng{7};
   Particles<D> p;
-  NeighborSearch<D> search{Vec<D>::Zero(), Vec<D>::Ones(), kRadius, kSkin};
-  NeighborList list;
+  NeighbourSearch<D> search{Vec<D>::Zero(), Vec<D>::Ones(), kRadius, kSkin};
+  NeighbourList list;
   Changed() {
     for (int i = 0; i < 1200; ++i) p.add(randomPoint<D>(rng), Vec<D>::Zero(), ParticleKind::Fluid, Phase::Liquid);
     search.build(p.position, p.kind, p.id, list);
@@ -50,7 +50,7 @@ struct Changed {
 
 // Every pair within `radius` now is in the list, no index twice, each list ascending.
 template <int D>
-void expectCovers(const Particles<D>& p, const NeighborList& list, double radius) {
+void expectCovers(const Particles<D>& p, const NeighbourList& list, double radius) {
   ASSERT_EQ(p.size(), list.particleCount());
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -74,7 +74,7 @@ void checkCarryOver() {
   EXPECT_EQ(builds + 1, c.search.builds());  // a new list for the solver's near list to be filtered from
   expectCovers(c.p, c.list, kRadius);
   // The near list, filtered at the build positions with reach r + skin, holds the pairs within r.
-  NeighborList near;
+  NeighbourList near;
   filterNeighbours<D>(c.search.builtPositions(), c.list, 0.05 + kSkin, near);
   expectCovers(c.p, near, 0.05);
   // It covers the particles until one of them has moved half the skin from where it was listed.
@@ -92,7 +92,7 @@ TEST(NeighbourCarryOver, RefusesWhatItCannotCarry) {
   auto refuses = [](auto&& change) {
     Changed<2> c;
     change(c.p);
-    const NeighborList before = c.list;
+    const NeighbourList before = c.list;
     EXPECT_FALSE(c.search.carryOver(c.p.position, c.p.kind, c.p.id, c.list));
     EXPECT_EQ(before.indices, c.list.indices);
     EXPECT_EQ(before.offsets, c.list.offsets);

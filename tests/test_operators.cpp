@@ -7,7 +7,7 @@
 
 #include "mps/gradient.hpp"
 #include "mps/laplacian.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/number_density.hpp"
 #include "mps/reference_density.hpp"
 
@@ -36,7 +36,7 @@ std::size_t makeLattice(Particles<D>& p, double l0, int half, const Vec<D>& cent
 template <int D>
 struct Setup {
   Particles<D> p;
-  NeighborList nl;
+  NeighbourList nl;
   MpsConstants c;
   std::size_t centre;
   explicit Setup(double re_ratio = 2.1, double re_lap_ratio = 3.1) {
@@ -44,7 +44,7 @@ struct Setup {
     c = referenceConstants(D, l0, re_ratio, re_lap_ratio);
     Vec<D> origin = Vec<D>::Constant(0.37);  // off the origin: the operators must not depend on it
     centre = makeLattice<D>(p, l0, 5, origin);
-    NeighborSearch<D> search(origin.array() - 0.1, origin.array() + 0.1, std::max(c.re_number_density, c.re_laplacian));
+    NeighbourSearch<D> search(origin.array() - 0.1, origin.array() + 0.1, std::max(c.re_number_density, c.re_laplacian));
     search.build(p.position, p.kind, nl);
   }
 };
@@ -130,8 +130,8 @@ void checkNeighbourSearchAgainstBruteForce() {
     p.add(x, Vec<D>::Zero(), i % 17 == 0 ? ParticleKind::Escaped : ParticleKind::Fluid, Phase::Liquid);
   }
   const double radius = 0.09;
-  NeighborSearch<D> search(Vec<D>::Zero(), Vec<D>::Ones(), radius);
-  NeighborList nl;
+  NeighbourSearch<D> search(Vec<D>::Zero(), Vec<D>::Ones(), radius);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   ASSERT_EQ(nl.particleCount(), p.size());
   std::size_t total = 0;
@@ -149,7 +149,7 @@ void checkNeighbourSearchAgainstBruteForce() {
   EXPECT_GT(total, p.size());  // the test is not vacuous
   // The near list (filterNeighbours): exactly the pairs within the smaller reach, in the full list's order.
   const double reach = 0.05;
-  NeighborList near;
+  NeighbourList near;
   filterNeighbours<D>(p.position, nl, reach, near);
   ASSERT_EQ(near.particleCount(), p.size());
   std::size_t near_total = 0;
@@ -172,8 +172,8 @@ TEST(NeighbourSearch, ParticlesOutsideTheBoxAreStillFound) {
   Particles<2> p;
   p.add(Vec<2>(1.02, 0.5), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
   p.add(Vec<2>(1.05, 0.5), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
-  NeighborSearch<2> search(Vec<2>::Zero(), Vec<2>::Ones(), 0.1);
-  NeighborList nl;
+  NeighbourSearch<2> search(Vec<2>::Zero(), Vec<2>::Ones(), 0.1);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   EXPECT_EQ(nl.end(0) - nl.begin(0), 1);
 }

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "mps/linear_solver.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/number_density.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "support/exact_solve.hpp"
@@ -109,8 +109,8 @@ TEST(PressurePoisson, CompressedGasAtRestHoldsRhoCSquaredDeltaWithTheMemoryTerm)
     p.add(squeeze * l0 * k.cast<double>(), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Gas);
   });
   const MpsConstants constants = referenceConstants(2, l0, 2.1, 3.1);
-  NeighborSearch<2> search(Vec<2>::Constant(-0.06), Vec<2>::Constant(0.06), constants.re_laplacian);
-  NeighborList nl;
+  NeighbourSearch<2> search(Vec<2>::Constant(-0.06), Vec<2>::Constant(0.06), constants.re_laplacian);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   const std::size_t centre = p.size() / 2;
   const std::vector<double> n_star(p.size(), numberDensityAt<2>(centre, p.position, nl, constants.re_number_density));

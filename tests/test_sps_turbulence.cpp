@@ -5,7 +5,7 @@
 #include <random>
 
 #include "mps/gradient.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/sps_turbulence.hpp"
 
 using namespace mistfall;
@@ -18,7 +18,7 @@ constexpr double kL0 = 0.005;
 template <int D>
 struct Lattice {
   Particles<D> p;
-  NeighborList nl;
+  NeighbourList nl;
   MpsConstants c = referenceConstants(D, kL0, 2.1, 3.1);
   int n;
   explicit Lattice(int n_per_axis) : n(n_per_axis) {
@@ -37,7 +37,7 @@ struct Lattice {
   }
   void rebuild() {
     const Vec<D> corner = Vec<D>::Constant(0.123);
-    NeighborSearch<D> search(corner, corner.array() + kL0 * n, c.re_number_density);
+    NeighbourSearch<D> search(corner, corner.array() + kL0 * n, c.re_number_density);
     search.build(p.position, p.kind, nl);
   }
   // Lattice index of particle i along axis a.
@@ -187,6 +187,6 @@ TEST(SpsTurbulence, EscapedParticlesGetZeroAndBadParametersThrow) {
   bad.ds = kL0;
   bad.ce = 0.0;
   EXPECT_THROW(checkSpsParameters(bad), std::invalid_argument);
-  NeighborList empty;
+  NeighbourList empty;
   EXPECT_THROW(spsTurbulenceEnergy<2>(L.p, empty, L.c, params(), k, samePhaseActive(L.p)), std::invalid_argument);
 }

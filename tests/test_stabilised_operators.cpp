@@ -12,7 +12,7 @@
 #include "mps/corrected_gradient.hpp"
 #include "mps/laplacian.hpp"
 #include "mps/laplacian_consistency.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
 
@@ -62,9 +62,9 @@ Particles<D> shapedLattice(Shape shape) {
 }
 
 template <int D>
-NeighborList neighboursOf(const Particles<D>& p, double radius) {
-  NeighborSearch<D> search(Vec<D>::Constant(-0.06), Vec<D>::Constant(0.06), radius);
-  NeighborList nl;
+NeighbourList neighboursOf(const Particles<D>& p, double radius) {
+  NeighbourSearch<D> search(Vec<D>::Constant(-0.06), Vec<D>::Constant(0.06), radius);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   return nl;
 }

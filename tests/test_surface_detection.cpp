@@ -68,8 +68,8 @@ TEST(SurfaceDetection, NeighbourCountMatchesTheLattice) {
   Particles<2> p;
   for (int i = -4; i <= 4; ++i)
     for (int j = -4; j <= 4; ++j) p.add(Vec<2>(0.01 * i, 0.01 * j), Vec<2>::Zero(), ParticleKind::Fluid, Phase::Liquid);
-  NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 0.021);
-  NeighborList nl;
+  NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 0.021);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   const std::size_t centre = 4 * 9 + 4;
   auto all = [](std::int32_t) { return true; };

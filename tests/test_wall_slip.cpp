@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/wall_slip.hpp"
 
 using namespace mistfall;
@@ -18,12 +18,12 @@ constexpr double kL0 = 0.01, kRe = 2.1 * kL0;
 struct Floor {
   std::vector<Vec<2>> position;
   std::vector<ParticleKind> kind;
-  NeighborList nl;
+  NeighbourList nl;
   explicit Floor(double height) {
     position.push_back(Vec<2>(0.0, height * kL0)), kind.push_back(ParticleKind::Fluid);
     for (int k : {-2, 2}) position.push_back(Vec<2>(k * kL0, 2.0 * kL0)), kind.push_back(ParticleKind::Fluid);
     for (int k = -6; k <= 6; ++k) position.push_back(Vec<2>(k * kL0, 0.0)), kind.push_back(ParticleKind::Wall);
-    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), kRe);
+    NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), kRe);
     search.build(position, kind, nl);
   }
   auto fixed() const {
@@ -72,8 +72,8 @@ TEST(WallSlip, InACornerAMoveIntoTheCornerIsTakenOff) {
     position.push_back(Vec<2>(k * kL0, 0.0)), kind.push_back(ParticleKind::Wall);
     if (k > 0) position.push_back(Vec<2>(0.0, k * kL0)), kind.push_back(ParticleKind::Wall);
   }
-  NeighborList nl;
-  NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), kRe);
+  NeighbourList nl;
+  NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), kRe);
   search.build(position, kind, nl);
   auto fixed = [&](std::int32_t j) { return kind[j] == ParticleKind::Wall; };
   Vec<2> into(-0.3 * kL0, -0.3 * kL0);

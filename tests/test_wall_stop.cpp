@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "mps/bubble_gas_motion.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/wall_stop.hpp"
 
 using namespace mistfall;
@@ -29,12 +29,12 @@ double nearestWallTo(const std::vector<Vec<2>>& position, const std::vector<Part
 struct Floor {
   std::vector<Vec<2>> position;
   std::vector<ParticleKind> kind;
-  NeighborList nl;
+  NeighbourList nl;
   explicit Floor(bool water_below = false) {
     position.push_back(Vec<2>(0.0, kL0)), kind.push_back(ParticleKind::Fluid);
     if (water_below) position.push_back(Vec<2>(0.0, 0.5 * kL0)), kind.push_back(ParticleKind::Fluid);
     for (int k = -4; k <= 4; ++k) position.push_back(Vec<2>(k * kL0, 0.0)), kind.push_back(ParticleKind::Wall);
-    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
     search.build(position, kind, nl);
   }
   auto fixed() const {
@@ -93,7 +93,7 @@ namespace {
 struct BubbleOnAFloor {
   Particles<2> p;
   CouplingRoles roles;
-  NeighborList nl;
+  NeighbourList nl;
   std::vector<std::size_t> gas;
   BubbleOnAFloor() {
     for (int iy = -1; iy <= 5; ++iy)
@@ -115,7 +115,7 @@ struct BubbleOnAFloor {
     roles.enclosed_gas.assign(n, 0);
     for (auto i : gas) roles.enclosed_gas[i] = 1;
     roles.enclosed_count = roles.gas_count = gas.size();
-    NeighborSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
+    NeighbourSearch<2> search(Vec<2>(-0.1, -0.1), Vec<2>(0.1, 0.1), 2.1 * kL0);
     search.build(p.position, p.kind, nl);
   }
   double nearestWall(std::size_t i) const { return nearestWallTo(p.position, p.kind, p.position[i]); }

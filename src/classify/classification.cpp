@@ -30,7 +30,7 @@ struct Neighbourhood {
 };
 
 template <int D>
-Neighbourhood<D> neighbourhoodOf(std::size_t i, const Particles<D>& p, const NeighborList& nl, double re) {
+Neighbourhood<D> neighbourhoodOf(std::size_t i, const Particles<D>& p, const NeighbourList& nl, double re) {
   Neighbourhood<D> h;
   const Phase ph = p.phase[i];
   for (auto s = nl.begin(i); s < nl.end(i); ++s) {
@@ -66,7 +66,7 @@ std::string_view categoryName(Category c) {
 }
 
 template <int D>
-std::vector<Category> classifyParticles(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
+std::vector<Category> classifyParticles(const Particles<D>& p, const NeighbourList& nl, const MpsConstants& c,
                                         const ClassificationParameters& params) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Category> out(p.size(), Category::None);
@@ -107,8 +107,8 @@ std::vector<Category> classifyParticles(const Particles<D>& p, const MpsConstant
     any = true;
   }
   if (!any) lower = upper = Vec<D>::Zero();
-  NeighborSearch<D> search(lower, upper, c.re_number_density);
-  NeighborList nl;
+  NeighbourSearch<D> search(lower, upper, c.re_number_density);
+  NeighbourList nl;
   search.build(p.position, p.kind, nl);
   return classifyParticles<D>(p, nl, c, params);
 }
@@ -126,9 +126,9 @@ std::vector<std::uint8_t> categoryBytes(const std::vector<Category>& categories)
   return out;
 }
 
-template std::vector<Category> classifyParticles<2>(const Particles<2>&, const NeighborList&, const MpsConstants&,
+template std::vector<Category> classifyParticles<2>(const Particles<2>&, const NeighbourList&, const MpsConstants&,
                                                     const ClassificationParameters&);
-template std::vector<Category> classifyParticles<3>(const Particles<3>&, const NeighborList&, const MpsConstants&,
+template std::vector<Category> classifyParticles<3>(const Particles<3>&, const NeighbourList&, const MpsConstants&,
                                                     const ClassificationParameters&);
 template std::vector<Category> classifyParticles<2>(const Particles<2>&, const MpsConstants&,
                                                     const ClassificationParameters&);

@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "classify/classification_parameters.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 #include "mps/reference_density.hpp"
 
@@ -59,7 +59,7 @@ std::string_view categoryName(Category c);
 // Classifies every particle. The neighbour list must hold every pair within c.re_number_density (a larger
 // radius is fine: pairs farther than re are skipped).
 template <int D>
-std::vector<Category> classifyParticles(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
+std::vector<Category> classifyParticles(const Particles<D>& p, const NeighbourList& nl, const MpsConstants& c,
                                         const ClassificationParameters& params);
 
 // The same with a neighbour list built here over the particles' bounding box (escaped particles ignored).

@@ -30,7 +30,7 @@
 #include <optional>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 #include "mps/phase_coupling.hpp"
 #include "mps/wall_stop.hpp"
@@ -107,7 +107,7 @@ std::vector<std::optional<Vec<D>>> voidTranslation(const Particles<D>& p, const 
 // waterfall, the water's velocity extended into a bubble carried its gas to 0.25 l0 from the floor's first wall
 // row, docs/waterfall.md). The neighbour list must then reach wall_stop + |move| too. Returns the moves stopped.
 template <int D>
-std::size_t extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, const CouplingRoles& roles, double re,
+std::size_t extendVelocityIntoBubbles(Particles<D>& p, const NeighbourList& nl, const CouplingRoles& roles, double re,
                                       double dt, const std::vector<std::optional<Vec<D>>>* translation = nullptr,
                                       const std::vector<std::int32_t>* region_of = nullptr, double wall_stop = 0.0) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
@@ -167,7 +167,7 @@ std::size_t extendVelocityIntoBubbles(Particles<D>& p, const NeighborList& nl, c
 // gas system's velocity it brings (metres per second in a splash) would otherwise enter the water's velocity
 // divergence in the pressure equation as a spike. Particles without liquid neighbours keep their velocity.
 template <int D>
-void adoptLiquidVelocity(Particles<D>& p, const NeighborList& nl, const std::vector<char>& joined, double re) {
+void adoptLiquidVelocity(Particles<D>& p, const NeighbourList& nl, const std::vector<char>& joined, double re) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<Vec<D>> next(p.velocity.begin(), p.velocity.end());
 #pragma omp parallel for schedule(static)

@@ -22,7 +22,7 @@
 
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 
 namespace mistfall {
 
@@ -42,7 +42,7 @@ struct CollisionCount {
 template <int D, class Affects>
 CollisionCount resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                                  const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
-                                 const NeighborList& nl, const CollisionModel& model, double dt, Affects&& affects) {
+                                 const NeighbourList& nl, const CollisionModel& model, double dt, Affects&& affects) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   std::vector<Vec<D>> change(n, Vec<D>::Zero());
   const double distance = model.distance, restitution = model.restitution;
@@ -101,7 +101,7 @@ CollisionCount resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<
 template <int D, class Affects>
 CollisionCount resolveCollisionPasses(int passes, std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                                       const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
-                                      const NeighborList& nl, const CollisionModel& model, double dt,
+                                      const NeighbourList& nl, const CollisionModel& model, double dt,
                                       Affects&& affects) {
   CollisionCount total;
   for (int pass = 0; pass < passes; ++pass) {
@@ -115,7 +115,7 @@ CollisionCount resolveCollisionPasses(int passes, std::vector<Vec<D>>& position,
 template <int D>
 CollisionCount resolveCollisions(std::vector<Vec<D>>& position, std::vector<Vec<D>>& velocity,
                                  const std::vector<ParticleKind>& kind, const std::vector<double>& mass,
-                                 const NeighborList& nl, const CollisionModel& model, double dt) {
+                                 const NeighbourList& nl, const CollisionModel& model, double dt) {
   return resolveCollisions<D>(position, velocity, kind, mass, nl, model, dt,
                               [](std::int64_t, std::int32_t) { return true; });
 }

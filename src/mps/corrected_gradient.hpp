@@ -27,7 +27,7 @@ struct CorrectedGradient {
 };
 
 template <int D, class Include, class Difference>
-CorrectedGradient<D> correctedGradientAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+CorrectedGradient<D> correctedGradientAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                                          const MpsConstants& c, double min_determinant, Include&& include,
                                          Difference&& difference) {
   Vec<D> sum = Vec<D>::Zero(), first = Vec<D>::Zero();

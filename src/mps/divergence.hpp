@@ -11,7 +11,7 @@ namespace mistfall {
 
 template <int D, class Include>
 double divergenceAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<Vec<D>>& u,
-                    const NeighborList& nl, const MpsConstants& c, Include&& include) {
+                    const NeighbourList& nl, const MpsConstants& c, Include&& include) {
   double sum = 0.0;
   forEachPairWithin<D>(
       i, position, nl, c.re_number_density, include,

@@ -55,7 +55,7 @@ int latticeNeighbourCount(int dimension, double link_radius, double l0) {
 }
 
 template <int D>
-void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
+void findGasRegions(const Particles<D>& p, const NeighbourList& nl, double link_radius, double l0, GasRegions& out,
                     const GasRegionOptions& options) {
   const std::vector<char>* was_enclosed = options.was_enclosed;
   const std::size_t closed_small_region = options.closed_small_region;
@@ -198,9 +198,9 @@ std::vector<BubbleStats> bubbleStatistics(const Particles<D>& p, const GasRegion
   return stats;
 }
 
-template void findGasRegions<2>(const Particles<2>&, const NeighborList&, double, double, GasRegions&,
+template void findGasRegions<2>(const Particles<2>&, const NeighbourList&, double, double, GasRegions&,
                                 const GasRegionOptions&);
-template void findGasRegions<3>(const Particles<3>&, const NeighborList&, double, double, GasRegions&,
+template void findGasRegions<3>(const Particles<3>&, const NeighbourList&, double, double, GasRegions&,
                                 const GasRegionOptions&);
 template std::vector<BubbleStats> bubbleStatistics<2>(const Particles<2>&, const GasRegions&, double);
 template std::vector<BubbleStats> bubbleStatistics<3>(const Particles<3>&, const GasRegions&, double);

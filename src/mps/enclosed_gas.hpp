@@ -55,7 +55,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 
 namespace mistfall {
@@ -103,7 +103,7 @@ struct GasRegionOptions {
 };
 
 template <int D>
-void findGasRegions(const Particles<D>& p, const NeighborList& nl, double link_radius, double l0, GasRegions& out,
+void findGasRegions(const Particles<D>& p, const NeighbourList& nl, double link_radius, double l0, GasRegions& out,
                     const GasRegionOptions& options = {});
 
 template <int D>

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "mps/enclosed_gas.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 #include "mps/phase_coupling.hpp"
 #include "mps/splitmix.hpp"
@@ -35,7 +35,7 @@ inline double entrainedGasDraw(std::int64_t step, std::size_t index) {
 // Swaps entrained sub-resolution gas (gas of enclosed regions that is not a resolved bubble: roles.enclosed_gas = 0)
 // with the liquid above it, as described above. `up` is the unit vector against gravity. Returns the swaps made.
 template <int D>
-std::size_t riseEntrainedGas(Particles<D>& p, const NeighborList& nl, const GasRegions& regions,
+std::size_t riseEntrainedGas(Particles<D>& p, const NeighbourList& nl, const GasRegions& regions,
                              const CouplingRoles& roles, const Vec<D>& up, double l0, double rise_speed, double dt,
                              std::int64_t step) {
   if (rise_speed <= 0.0) return 0;

@@ -26,7 +26,7 @@ namespace mistfall {
 // Raises the pressure of the gap's water to the air's beside it (the floors are read from the solved pressures
 // before any is raised, so the order of the particles does not matter). Returns how many were raised.
 template <int D>
-std::size_t floorGapWaterPressure(const Particles<D>& p, const NeighborList& nl, double re, double beta_n0,
+std::size_t floorGapWaterPressure(const Particles<D>& p, const NeighbourList& nl, double re, double beta_n0,
                                   double gas_density, const Vec<D>& gravity, std::vector<double>& pressure) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   std::vector<double> floor(n, -std::numeric_limits<double>::infinity());

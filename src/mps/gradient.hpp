@@ -17,7 +17,7 @@ enum class GradientForm { MinimumNeighbour, Plain };
 // `include(j)`: neighbours in the sum; `in_minimum(j)`: neighbours whose value may set p_hat.
 template <int D, class Include, class InMinimum>
 Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<double>& phi,
-                  const NeighborList& nl, const MpsConstants& c, GradientForm form, Include&& include,
+                  const NeighbourList& nl, const MpsConstants& c, GradientForm form, Include&& include,
                   InMinimum&& in_minimum) {
   const double re = c.re_number_density;
   double phi_hat = phi[i];
@@ -36,7 +36,7 @@ Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std:
 
 template <int D, class Include>
 Vec<D> gradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<double>& phi,
-                  const NeighborList& nl, const MpsConstants& c, GradientForm form, Include&& include) {
+                  const NeighbourList& nl, const MpsConstants& c, GradientForm form, Include&& include) {
   return gradientAt<D>(i, position, phi, nl, c, form, include, include);
 }
 

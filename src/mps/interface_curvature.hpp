@@ -24,7 +24,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/pair_loop.hpp"
 #include "mps/vector.hpp"
 
@@ -68,7 +68,7 @@ inline LiquidFractionScale liquidFractionScale(int dimension, double radius_over
 // `nl` must hold each particle's neighbours within colour_radius; `bubble_of(j)`: the bubble (>= 0) of gas
 // particle j, or -1; `liquid(j)`: j is liquid.
 template <int D, class BubbleOf, class Liquid>
-InterfaceCurvature interfaceCurvature(const std::vector<Vec<D>>& position, const NeighborList& nl, double l0,
+InterfaceCurvature interfaceCurvature(const std::vector<Vec<D>>& position, const NeighbourList& nl, double l0,
                                       double colour_radius, double fit_radius, BubbleOf&& bubble_of,
                                       Liquid&& liquid) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
@@ -109,8 +109,8 @@ InterfaceCurvature interfaceCurvature(const std::vector<Vec<D>>& position, const
     q[k] = point[on[k]];
     lower = lower.cwiseMin(q[k]), upper = upper.cwiseMax(q[k]);
   }
-  NeighborSearch<D> search(lower.array() - l0, upper.array() + l0, fit_radius);
-  NeighborList near;
+  NeighbourSearch<D> search(lower.array() - l0, upper.array() + l0, fit_radius);
+  NeighbourList near;
   search.build(q, std::vector<ParticleKind>(on.size(), ParticleKind::Fluid), near);
   const auto m = static_cast<std::int64_t>(on.size());
   auto sameSide = [&](std::int64_t a, std::int32_t b) {

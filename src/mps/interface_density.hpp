@@ -27,7 +27,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 
 namespace mistfall {
@@ -44,7 +44,7 @@ struct InterfaceMoments {
 };
 
 template <int D>
-InterfaceMoments<D> adjacentPairMidpoints(const Particles<D>& p, const NeighborList& nl, double l0) {
+InterfaceMoments<D> adjacentPairMidpoints(const Particles<D>& p, const NeighbourList& nl, double l0) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   InterfaceMoments<D> m;
   m.first.assign(n, Vec<D>::Zero());
@@ -78,7 +78,7 @@ InterfaceMoments<D> adjacentPairMidpoints(const Particles<D>& p, const NeighborL
 // phi_i of every fluid particle (0 for walls and escaped particles; they never form a pair across the interface).
 // `reach`: the neighbour list's radius (at least the Laplacian radius 3.1 l0).
 template <int D>
-std::vector<double> interfaceDistances(const Particles<D>& p, const NeighborList& nl, double reach, double l0) {
+std::vector<double> interfaceDistances(const Particles<D>& p, const NeighbourList& nl, double reach, double l0) {
   using Matrix = Eigen::Matrix<double, D, D>;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto moments = detail::adjacentPairMidpoints<D>(p, nl, l0);

@@ -13,7 +13,7 @@ namespace mistfall {
 // `include(j)` selects which neighbours take part (e.g. skip escaped or other-phase particles).
 template <int D, class T, class Include>
 T laplacianAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<T>& phi,
-              const NeighborList& nl, const MpsConstants& c, Include&& include) {
+              const NeighbourList& nl, const MpsConstants& c, Include&& include) {
   T sum = phi[i] * 0.0;
   forEachPairWithin<D>(i, position, nl, c.re_laplacian, include,
                        [&](std::int32_t j, const Vec<D>&, double, double w) { sum += (phi[j] - phi[i]) * w; });

@@ -18,7 +18,7 @@
 namespace mistfall {
 
 template <int D, class Include>
-double laplacianConsistencyTerm(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+double laplacianConsistencyTerm(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                                 const MpsConstants& c, const Vec<D>& last_gradient, Include&& include) {
   Vec<D> moment = Vec<D>::Zero();
   forEachPairWithin<D>(i, position, nl, c.re_laplacian, include,

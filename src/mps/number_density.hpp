@@ -3,14 +3,14 @@
 
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/weight.hpp"
 
 namespace mistfall {
 
 // Number density counting only the neighbours `include(j)` admits (one phase's view in the two-phase model).
 template <int D, class Include>
-double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                        Include&& include) {
   double n = 0.0;
   for (auto s = nl.begin(i); s < nl.end(i); ++s) {
@@ -23,7 +23,7 @@ double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const
 // How many neighbours j with include(j) lie within re (the neighbour count; a full lattice has
 // latticeNeighbourCount of enclosed_gas.hpp: 12 in 2D and 32 in 3D for re = 2.1 l0).
 template <int D, class Include>
-int neighbourCountAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+int neighbourCountAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                      Include&& include) {
   int count = 0;
   for (auto s = nl.begin(i); s < nl.end(i); ++s) {
@@ -35,7 +35,7 @@ int neighbourCountAt(std::size_t i, const std::vector<Vec<D>>& position, const N
 
 // Number density counting every neighbour in the list (the list never holds escaped particles).
 template <int D>
-double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re) {
+double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re) {
   return numberDensityAt<D>(i, position, nl, re, [](std::int32_t) { return true; });
 }
 

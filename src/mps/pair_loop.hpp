@@ -5,13 +5,13 @@
 #include <cmath>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/weight.hpp"
 
 namespace mistfall {
 
 template <int D, class Include, class Visit>
-void forEachPairWithin(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+void forEachPairWithin(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                        Include&& include, Visit&& visit) {
   // Pairs this far apart are beyond re whatever the rounding of the square root: skipped before computing it (the
   // list's skin holds many).

@@ -24,7 +24,7 @@ namespace mistfall {
 // `include(j)` admits: it points towards where they crowd (the shift's concentration gradient; wall_slip.hpp's
 // wall normal).
 template <int D, class Include>
-Vec<D> neighbourhoodFirstMoment(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+Vec<D> neighbourhoodFirstMoment(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                                 Include&& include) {
   Vec<D> first = Vec<D>::Zero();
   forEachPairWithin<D>(i, position, nl, re, include,
@@ -34,7 +34,7 @@ Vec<D> neighbourhoodFirstMoment(std::size_t i, const std::vector<Vec<D>>& positi
 
 // delta r_i for particle i moving at `velocity` (P_i given by `normal`, zero for none; see above).
 template <int D, class Include>
-Vec<D> shiftingDisplacement(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+Vec<D> shiftingDisplacement(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                             const MpsConstants& c, double coefficient, const Vec<D>& velocity, double dt,
                             const Vec<D>& normal, Include&& include) {
   Vec<D> first = neighbourhoodFirstMoment<D>(i, position, nl, c.re_number_density, include);

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "mps/enclosed_gas.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/particles.hpp"
 
 namespace mistfall {
@@ -71,7 +71,7 @@ void assignCouplingRoles(const Particles<D>& p, const GasRegions& regions, Coupl
 // Walls of the gas system: wall particles and liquid fluid particles within `radius` of a gas particle. Dummies
 // never carry an unknown. The neighbour list must reach `radius`.
 template <int D>
-void markGasSideWalls(const Particles<D>& p, const NeighborList& nl, double radius, CouplingRoles& roles) {
+void markGasSideWalls(const Particles<D>& p, const NeighbourList& nl, double radius, CouplingRoles& roles) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   roles.gas_side_wall.assign(n, 0);
   const double r2max = radius * radius;

@@ -30,9 +30,9 @@ PressureProblem singlePhaseProblem(const Particles<D>& p, const PhaseProperties&
 
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& number_density,
-                            const NeighborList& nl, const MpsConstants& c, const PressureProblem& problem,
-                            PressureSourceTerm source, double dt, PressureSystem& sys, const NeighborList* near) {
-  const NeighborList& divergence_list = near ? *near : nl;
+                            const NeighbourList& nl, const MpsConstants& c, const PressureProblem& problem,
+                            PressureSourceTerm source, double dt, PressureSystem& sys, const NeighbourList* near) {
+  const NeighbourList& divergence_list = near ? *near : nl;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto& takes_part = problem.takes_part;
   const bool variable = !problem.density_of.empty();
@@ -126,11 +126,11 @@ template PressureProblem singlePhaseProblem<2>(const Particles<2>&, const PhaseP
                                                const std::vector<char>&);
 template PressureProblem singlePhaseProblem<3>(const Particles<3>&, const PhaseProperties&,
                                                const std::vector<char>&);
-template void assemblePressureSystem<2>(const Particles<2>&, const std::vector<double>&, const NeighborList&,
+template void assemblePressureSystem<2>(const Particles<2>&, const std::vector<double>&, const NeighbourList&,
                                         const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
-                                        PressureSystem&, const NeighborList*);
-template void assemblePressureSystem<3>(const Particles<3>&, const std::vector<double>&, const NeighborList&,
+                                        PressureSystem&, const NeighbourList*);
+template void assemblePressureSystem<3>(const Particles<3>&, const std::vector<double>&, const NeighbourList&,
                                         const MpsConstants&, const PressureProblem&, PressureSourceTerm, double,
-                                        PressureSystem&, const NeighborList*);
+                                        PressureSystem&, const NeighbourList*);
 
 }  // namespace mistfall

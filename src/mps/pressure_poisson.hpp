@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "case/case_config.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/reference_density.hpp"
 
 namespace mistfall {
@@ -103,12 +103,12 @@ inline double compressibleMemoryTerm(PressureSourceTerm source, double previous,
 }
 
 // `number_density` holds n* and p.velocity u* (after the explicit stage). `near` (optional): a list of the pairs
-// within the number-density radius (neighbor_search.hpp filterNeighbours) for the mixed source's divergence; the
+// within the number-density radius (neighbour_search.hpp filterNeighbours) for the mixed source's divergence; the
 // same bits as with `nl`, fewer pairs visited.
 template <int D>
 void assemblePressureSystem(const Particles<D>& p, const std::vector<double>& number_density,
-                            const NeighborList& nl, const MpsConstants& c, const PressureProblem& problem,
+                            const NeighbourList& nl, const MpsConstants& c, const PressureProblem& problem,
                             PressureSourceTerm source, double dt, PressureSystem& sys,
-                            const NeighborList* near = nullptr);
+                            const NeighbourList* near = nullptr);
 
 }  // namespace mistfall

@@ -27,7 +27,7 @@ namespace mistfall {
 // free surface: no projection; surface_tangent.hpp), `difference(j, r_ij)` = p_j - p_i as in the gradient,
 // `include(j)` its neighbours.
 template <int D, class Include, class Difference>
-Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                          const MpsConstants& c, double coefficient, const Vec<D>& gradient, const Vec<D>& normal,
                          Include&& include, Difference&& difference) {
   double lowest = 0.0;
@@ -45,7 +45,7 @@ Vec<D> pressureRepulsion(std::size_t i, const std::vector<Vec<D>>& position, con
 // term above with coefficient `k`: what the liquid's and the one equation's corrections apply.
 template <int D, class Include, class Difference>
 CorrectedGradient<D> repulsiveCorrectedGradient(std::size_t i, const std::vector<Vec<D>>& position,
-                                                const NeighborList& nl, const MpsConstants& c, double min_determinant,
+                                                const NeighbourList& nl, const MpsConstants& c, double min_determinant,
                                                 bool repel, double k, const Vec<D>& normal, Include&& include,
                                                 Difference&& difference) {
   auto gradient = correctedGradientAt<D>(i, position, nl, c, min_determinant, include, difference);

@@ -22,7 +22,7 @@
 namespace mistfall {
 
 namespace {
-// The neighbour list's skin, in particle spacings (neighbor_search.hpp): the list is rebuilt when a particle has
+// The neighbour list's skin, in particle spacings (neighbour_search.hpp): the list is rebuilt when a particle has
 // moved more than half of it since the last build. A larger skin means fewer builds but longer lists for every
 // operator to filter.
 constexpr double kNeighbourSkin = 0.5;
@@ -232,7 +232,7 @@ void MpsSolver<D>::advanceClock(double until, double dt) {
 }
 
 template <int D>
-const NeighborList& MpsSolver<D>::currentNeighbours() {
+const NeighbourList& MpsSolver<D>::currentNeighbours() {
   buildNeighbours();
   return neighbours_;
 }
@@ -273,14 +273,14 @@ bool MpsSolver<D>::hasFullNeighbourhood(std::size_t i, const std::vector<char>& 
   return lopsided.norm() <= asymmetry * constants_.n0;
 }
 
-// The neighbour list for the current positions: the last one while it still covers them (neighbor_search.hpp:
+// The neighbour list for the current positions: the last one while it still covers them (neighbour_search.hpp:
 // the results are the same, bit for bit, as with a fresh list), else a new one.
 template <int D>
 void MpsSolver<D>::buildNeighbours() {
   auto t = timer_.scope(Stage::Neighbours);
   const auto& p = state_.particles;
   // A list is made anew only when the last one no longer covers the particles and cannot be carried over the
-  // particles an open boundary removed or made since (neighbor_search.hpp).
+  // particles an open boundary removed or made since (neighbour_search.hpp).
   if (!search_.covers(p.position, p.kind) && !search_.carryOver(p.position, p.kind, p.id, neighbours_))
     search_.build(p.position, p.kind, p.id, neighbours_);
   if (near_built_ != search_.builds()) {

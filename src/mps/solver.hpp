@@ -33,7 +33,7 @@
 #include "mps/particle_trace.hpp"
 #include "mps/phase_coupling.hpp"
 #include "mps/entrained_bubbles.hpp"
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "mps/pressure_poisson.hpp"
 #include "mps/reference_density.hpp"
 #include "mps/simulation_state.hpp"
@@ -129,7 +129,7 @@ class MpsSolver {
   // Wall seconds per stage of every step since construction (or since the caller reset it).
   StageTimer& stageTimer() { return timer_; }
   const StageTimer& stageTimer() const { return timer_; }
-  const NeighborList& neighbours() const { return neighbours_; }
+  const NeighbourList& neighbours() const { return neighbours_; }
   double maxFluidSpeed() const;
   std::pair<double, double> maxPhaseSpeeds() const;  // fastest liquid and gas particle [m/s]
   std::string fastestParticle() const;               // its id, phase, role and place, in words
@@ -139,7 +139,7 @@ class MpsSolver {
   static constexpr std::size_t kRecentSteps = 200;
   double particleMass(std::size_t i) const;
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
-  const NeighborList& currentNeighbours();
+  const NeighbourList& currentNeighbours();
   // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).
   std::vector<BubbleStats> currentBubbles();
   // Writes particle `id` and its neighbours within l0 after every stage of each step from `from` on to the CSV file
@@ -241,11 +241,11 @@ class MpsSolver {
   Vec<D> gravity_;
   Vec<D> domain_lower_, domain_upper_;
   std::array<bool, 2> phase_present_{false, false};
-  NeighborSearch<D> search_;
-  NeighborList neighbours_;
+  NeighbourSearch<D> search_;
+  NeighbourList neighbours_;
   // The pairs of neighbours_ within near_reach_ (+ the skin): for the operators of the number-density radius
   // (number density, gradient, gas regions, collision), which then visit about half the pairs (2D).
-  NeighborList near_neighbours_;
+  NeighbourList near_neighbours_;
   double near_reach_ = 0.0;
   std::int64_t near_built_ = -1;  // search_.builds() when near_neighbours_ was filtered
   GasRegions regions_;

@@ -4,7 +4,7 @@
 // decays. Sorting the arrays by the cell of the neighbour search's grid (cells in row-major order, the last axis
 // slowest; stable within a cell) restores it, and makes the build's cell lists runs of consecutive particles.
 // Measured on waterfall.toml at 5.4-5.5 s (1 thread): 159 -> 118 ms a step sorted every 100 steps (solver.cpp
-// kSortInterval), 103 with the search's cells a third of its reach (neighbor_search.cpp). Results change at
+// kSortInterval), 103 with the search's cells a third of its reach (neighbour_search.cpp). Results change at
 // round-off (sums in another order), never in kind; the order is a function of the state only, so a resumed run
 // stays bit-identical.
 #pragma once
@@ -17,7 +17,7 @@
 
 namespace mistfall {
 
-// The permutation that sorts particles by `key` (their cell, NeighborSearch::cellKey), stable: order[k] is the
+// The permutation that sorts particles by `key` (their cell, NeighbourSearch::cellKey), stable: order[k] is the
 // index of the particle that goes to place k.
 inline std::vector<std::size_t> orderByKey(const std::vector<std::int64_t>& key) {
   std::vector<std::size_t> order(key.size());

@@ -43,7 +43,7 @@ inline void checkSpsParameters(const SpsParameters& s) {
 // within re_number_density (the neighbour list must have been built with at least that radius).
 template <int D, class Include>
 Tensor<D> velocityGradientAt(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<Vec<D>>& u,
-                             const NeighborList& nl, const MpsConstants& c, Include&& include) {
+                             const NeighbourList& nl, const MpsConstants& c, Include&& include) {
   Tensor<D> sum = Tensor<D>::Zero();
   forEachPairWithin<D>(i, position, nl, c.re_number_density, include,
                        [&](std::int32_t j, const Vec<D>& rij, double r2, double w) {
@@ -62,7 +62,7 @@ double strainProduction(const Tensor<D>& grad_u) {
 // k_i of eq. (25) at particle i; `include(j)` picks the neighbours (the caller passes "same phase, active").
 // The parameters are not checked here (hot loop): see checkSpsParameters.
 template <int D, class Include>
-double spsTurbulenceEnergyAt(std::size_t i, const Particles<D>& p, const NeighborList& nl, const MpsConstants& c,
+double spsTurbulenceEnergyAt(std::size_t i, const Particles<D>& p, const NeighbourList& nl, const MpsConstants& c,
                              const SpsParameters& s, Include&& include) {
   const double production = strainProduction<D>(velocityGradientAt<D>(i, p.position, p.velocity, nl, c, include));
   return s.cv / s.ce * s.ds * s.ds * production;
@@ -74,7 +74,7 @@ inline double turbulenceIntensity(double k) { return std::sqrt(2.0 * k / 3.0); }
 // k for every particle into `k` (resized to p.size()); OpenMP-parallel over particles.
 // `include(i, j)` says whether neighbour j takes part in the gradient at particle i. Escaped particles get 0.
 template <int D, class PairInclude>
-void spsTurbulenceEnergy(const Particles<D>& p, const NeighborList& nl, const MpsConstants& c, const SpsParameters& s,
+void spsTurbulenceEnergy(const Particles<D>& p, const NeighbourList& nl, const MpsConstants& c, const SpsParameters& s,
                          std::vector<double>& k, PairInclude&& include) {
   checkSpsParameters(s);
   if (nl.particleCount() != p.size())

@@ -25,7 +25,7 @@ struct SurfaceTangents {
 };
 
 template <int D, class Surface>
-SurfaceTangents<D> surfaceTangents(const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+SurfaceTangents<D> surfaceTangents(const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                                    const std::vector<Vec<D>>& last_gradient, Surface&& surface) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   SurfaceTangents<D> t;

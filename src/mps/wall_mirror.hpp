@@ -29,7 +29,7 @@ inline bool isMirroredWall(ParticleKind k) { return k == ParticleKind::Wall || k
 // With `with_divergence` false, the hydrostatic part alone (a row without a divergence source: inflow_pressure.hpp).
 template <int D>
 double mirroredWallTerm(std::size_t i, const std::vector<Vec<D>>& position, const std::vector<Vec<D>>& velocity,
-                        const std::vector<ParticleKind>& kind, const NeighborList& nl, const MpsConstants& c,
+                        const std::vector<ParticleKind>& kind, const NeighbourList& nl, const MpsConstants& c,
                         double rho, const Vec<D>& gravity, double dt, bool with_divergence = true) {
   auto wall = [&](std::int32_t j) { return isMirroredWall(kind[j]); };
   double hydrostatic = 0.0;
@@ -49,7 +49,7 @@ double mirroredWallTerm(std::size_t i, const std::vector<Vec<D>>& position, cons
 // None: no such particle within re.
 template <int D, class Density, class Carries>
 std::optional<double> continuedPressureAt(std::size_t b, const std::vector<Vec<D>>& position,
-                                          const std::vector<double>& pressure, const NeighborList& nl, double re,
+                                          const std::vector<double>& pressure, const NeighbourList& nl, double re,
                                           Density&& density, const Vec<D>& gravity, Carries&& carries) {
   double sum = 0.0, sum_w = 0.0;
   forEachPairWithin<D>(b, position, nl, re, carries, [&](std::int32_t j, const Vec<D>& rbj, double, double w) {
@@ -64,7 +64,7 @@ std::optional<double> continuedPressureAt(std::size_t b, const std::vector<Vec<D
 // each continuing its pressure with its density density(j).
 template <int D, class Density, class Carries>
 void averageMirroredWallPressure(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                                 std::vector<double>& pressure, const NeighborList& nl, double re, Density&& density,
+                                 std::vector<double>& pressure, const NeighbourList& nl, double re, Density&& density,
                                  const Vec<D>& gravity, Carries&& carries) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
 #pragma omp parallel for schedule(static)

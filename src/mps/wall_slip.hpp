@@ -22,7 +22,7 @@ namespace mistfall {
 // Removes from `displacement` of particle i its component into the walls (fixed(j)) within `re` (see above).
 // Returns whether it changed it.
 template <int D, class Fixed>
-bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl, double re,
+bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
                                  Fixed&& fixed, Vec<D>& displacement) {
   const Vec<D> moment = neighbourhoodFirstMoment<D>(i, position, nl, re, fixed);
   const double size = moment.norm();

@@ -17,14 +17,14 @@
 #include <cstddef>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 
 namespace mistfall {
 
 // Removes from `displacement` of particle i its approach to every particle j of its list with fixed(j) that it would
 // bring within `distance` (see above). The list must reach distance + |displacement|. Returns whether it changed it.
 template <int D, class Fixed>
-bool stopDisplacementAtWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighborList& nl,
+bool stopDisplacementAtWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                              double distance, Fixed&& fixed, Vec<D>& displacement) {
   bool stopped = false;
   const double d2 = distance * distance;

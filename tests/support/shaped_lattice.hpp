@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 #include "lattice.hpp"
 
 namespace mistfall::test_support {
@@ -44,9 +44,9 @@ std::vector<Vec<D>> lattice(Shape shape) {
 }
 
 template <int D>
-NeighborList neighboursOf(const std::vector<Vec<D>>& x, double radius) {
-  NeighborSearch<D> search(Vec<D>::Constant(-0.05), Vec<D>::Constant(0.05), radius);
-  NeighborList nl;
+NeighbourList neighboursOf(const std::vector<Vec<D>>& x, double radius) {
+  NeighbourSearch<D> search(Vec<D>::Constant(-0.05), Vec<D>::Constant(0.05), radius);
+  NeighbourList nl;
   search.build(x, std::vector<ParticleKind>(x.size(), ParticleKind::Fluid), nl);
   return nl;
 }

@@ -18,7 +18,7 @@
 
 namespace mistfall {
 
-struct NeighborList {
+struct NeighbourList {
   std::vector<std::int64_t> offsets;  // size N + 1; neighbours of i are indices[offsets[i] .. offsets[i+1])
   std::vector<std::int32_t> indices;
 
@@ -28,16 +28,16 @@ struct NeighborList {
 };
 
 template <int D>
-class NeighborSearch {
+class NeighbourSearch {
  public:
   // lower/upper bound the region where particles may be; particles marked Escaped are ignored.
-  NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin = 0.0);
+  NeighbourSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin = 0.0);
 
   // Rebuilds the cells and the neighbour list for the given positions (and remembers them, for covers()).
-  void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind, NeighborList& out);
+  void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind, NeighbourList& out);
   // The same, remembering the particles' ids (for carryOver).
   void build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-             const std::vector<std::uint64_t>& id, NeighborList& out);
+             const std::vector<std::uint64_t>& id, NeighbourList& out);
 
   // Whether the last list built still holds every pair within radius() at these positions: the same particles,
   // the same of them active, none moved more than skin / 2 since the build (with skin 0: none moved at all).
@@ -49,7 +49,7 @@ class NeighborSearch {
   // build position. The list then holds every pair within radius() as a new build would, each particle's in
   // ascending order, so every operator gives the same bits with it. Returns false, changing nothing, otherwise.
   bool carryOver(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                 const std::vector<std::uint64_t>& id, NeighborList& out);
+                 const std::vector<std::uint64_t>& id, NeighbourList& out);
   // Each particle's position at the build (or, for one made since, at the carry-over that listed it): the positions
   // a list filtered for a smaller reach must be filtered at (filterNeighbours).
   const std::vector<Vec<D>>& builtPositions() const { return built_position_; }
@@ -89,9 +89,9 @@ class NeighborSearch {
 
 // The pairs of `list` closer than `reach` at `position`, each particle's in the same (ascending) order: a list built
 // with radius R and skin s, filtered at its build positions with reach r + s (r <= R), holds every pair within r
-// for as long as the full list covers the positions (NeighborSearch::covers), so operators of radius r give the same
+// for as long as the full list covers the positions (NeighbourSearch::covers), so operators of radius r give the same
 // bits with it and visit fewer pairs (in 2D, (r + s)^2 / (R + s)^2 of them).
 template <int D>
-void filterNeighbours(const std::vector<Vec<D>>& position, const NeighborList& list, double reach, NeighborList& out);
+void filterNeighbours(const std::vector<Vec<D>>& position, const NeighbourList& list, double reach, NeighbourList& out);
 
 }  // namespace mistfall

@@ -1,4 +1,4 @@
-#include "mps/neighbor_search.hpp"
+#include "mps/neighbour_search.hpp"
 
 #include <omp.h>
 
@@ -17,7 +17,7 @@ constexpr int kCellsPerReach = 3;
 }  // namespace
 
 template <int D>
-NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin)
+NeighbourSearch<D>::NeighbourSearch(const Vec<D>& lower, const Vec<D>& upper, double radius, double skin)
     : radius_(radius), skin_(skin), cell_size_((radius + skin) / kCellsPerReach) {
   if (!(radius > 0.0)) throw std::invalid_argument("neighbour search radius must be positive");
   if (!(skin >= 0.0)) throw std::invalid_argument("neighbour search skin must not be negative");
@@ -30,7 +30,7 @@ NeighborSearch<D>::NeighborSearch(const Vec<D>& lower, const Vec<D>& upper, doub
 }
 
 template <int D>
-Eigen::Matrix<std::int64_t, D, 1> NeighborSearch<D>::cellOf(const Vec<D>& x) const {
+Eigen::Matrix<std::int64_t, D, 1> NeighbourSearch<D>::cellOf(const Vec<D>& x) const {
   Eigen::Matrix<std::int64_t, D, 1> c;
   for (int k = 0; k < D; ++k) {
     const double f = std::floor((x[k] - lower_[k]) / cell_size_);
@@ -40,14 +40,14 @@ Eigen::Matrix<std::int64_t, D, 1> NeighborSearch<D>::cellOf(const Vec<D>& x) con
 }
 
 template <int D>
-std::int64_t NeighborSearch<D>::cellIndex(const Eigen::Matrix<std::int64_t, D, 1>& c) const {
+std::int64_t NeighbourSearch<D>::cellIndex(const Eigen::Matrix<std::int64_t, D, 1>& c) const {
   std::int64_t idx = 0;
   for (int k = D - 1; k >= 0; --k) idx = idx * cells_[k] + c[k];
   return idx;
 }
 
 template <int D>
-void NeighborSearch<D>::binParticles() {
+void NeighbourSearch<D>::binParticles() {
   const std::int64_t n = static_cast<std::int64_t>(particle_cell_.size());
   std::int64_t ncells = 1;
   for (int k = 0; k < D; ++k) ncells *= cells_[k];
@@ -63,7 +63,7 @@ void NeighborSearch<D>::binParticles() {
 
 template <int D>
 template <class Visit>
-void NeighborSearch<D>::forEachCandidate(const Vec<D>& x, Visit&& visit) const {
+void NeighbourSearch<D>::forEachCandidate(const Vec<D>& x, Visit&& visit) const {
   const auto c = cellOf(x);
   Eigen::Matrix<std::int64_t, D, 1> lo, hi;
   for (int k = 0; k < D; ++k) {
@@ -86,8 +86,8 @@ void NeighborSearch<D>::forEachCandidate(const Vec<D>& x, Visit&& visit) const {
 }
 
 template <int D>
-void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                              const std::vector<std::uint64_t>& id, NeighborList& out) {
+void NeighbourSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                              const std::vector<std::uint64_t>& id, NeighbourList& out) {
   build(position, kind, out);
   built_id_ = id;
   built_next_id_ = 0;
@@ -95,8 +95,8 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
 }
 
 template <int D>
-void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                              NeighborList& out) {
+void NeighbourSearch<D>::build(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                              NeighbourList& out) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   ++builds_;
   built_id_.clear();
@@ -154,7 +154,7 @@ void NeighborSearch<D>::build(const std::vector<Vec<D>>& position, const std::ve
 }
 
 template <int D>
-bool NeighborSearch<D>::covers(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind) const {
+bool NeighbourSearch<D>::covers(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind) const {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   if (builds_ == 0 || static_cast<std::int64_t>(built_position_.size()) != n ||
       static_cast<std::int64_t>(particle_cell_.size()) != n)
@@ -173,8 +173,8 @@ bool NeighborSearch<D>::covers(const std::vector<Vec<D>>& position, const std::v
 }
 
 template <int D>
-bool NeighborSearch<D>::carryOver(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
-                                  const std::vector<std::uint64_t>& id, NeighborList& out) {
+bool NeighbourSearch<D>::carryOver(const std::vector<Vec<D>>& position, const std::vector<ParticleKind>& kind,
+                                  const std::vector<std::uint64_t>& id, NeighbourList& out) {
   const std::int64_t n = static_cast<std::int64_t>(position.size());
   const std::int64_t built = static_cast<std::int64_t>(built_id_.size());
   if (builds_ == 0 || built == 0 || static_cast<std::int64_t>(id.size()) != n ||
@@ -225,7 +225,7 @@ bool NeighborSearch<D>::carryOver(const std::vector<Vec<D>>& position, const std
       if (m != k && (position[m] - position[k]).squaredNorm() < reach2) list.push_back(static_cast<std::int32_t>(m));
   }
   // The new list: each survivor's old pairs renumbered (in order: the renumbering keeps it), then the new particles.
-  NeighborList next;
+  NeighbourList next;
   next.offsets.assign(n + 1, 0);
   for (std::int64_t i = 0; i < n; ++i) {
     std::int64_t count = 0;
@@ -267,7 +267,7 @@ bool NeighborSearch<D>::carryOver(const std::vector<Vec<D>>& position, const std
 }
 
 template <int D>
-void filterNeighbours(const std::vector<Vec<D>>& position, const NeighborList& list, double reach, NeighborList& out) {
+void filterNeighbours(const std::vector<Vec<D>>& position, const NeighbourList& list, double reach, NeighbourList& out) {
   const std::int64_t n = static_cast<std::int64_t>(list.particleCount());
   const double reach2 = reach * reach;
   auto near = [&](std::int64_t i, std::int32_t j) { return (position[j] - position[i]).squaredNorm() < reach2; };
@@ -288,9 +288,9 @@ void filterNeighbours(const std::vector<Vec<D>>& position, const NeighborList& l
   }
 }
 
-template class NeighborSearch<2>;
-template class NeighborSearch<3>;
-template void filterNeighbours<2>(const std::vector<Vec<2>>&, const NeighborList&, double, NeighborList&);
-template void filterNeighbours<3>(const std::vector<Vec<3>>&, const NeighborList&, double, NeighborList&);
+template class NeighbourSearch<2>;
+template class NeighbourSearch<3>;
+template void filterNeighbours<2>(const std::vector<Vec<2>>&, const NeighbourList&, double, NeighbourList&);
+template void filterNeighbours<3>(const std::vector<Vec<3>>&, const NeighbourList&, double, NeighbourList&);
 
 }  // namespace mistfall
