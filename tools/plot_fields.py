@@ -3,7 +3,7 @@
 
 Reads one .vti file (or, with --all, every .vti file of a folder) holding the arrays gas_velocity,
 liquid_velocity (3 components), gas_sps_k (SPS turbulence energy k, eqs. (25)-(26)), gas_coverage and
-liquid_coverage (total MPS weight of nearby particles; 0 where there is none), as src/io/grid_fields.cpp writes
+liquid_coverage (total MPS weight of nearby particles; 0 where there is none), as src/io/vti_file.cpp writes
 them (binary-appended or ASCII). For each file NAME.vti it writes
   NAME_velocity.png    (Fig. 4) gas velocity arrows where gas is near, liquid velocity arrows in another colour,
                        over a light map of the liquid coverage;

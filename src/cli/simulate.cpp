@@ -19,6 +19,7 @@
 #include "cli/resume_check.hpp"
 #include "cli/run_directory.hpp"
 #include "cli/run_lock.hpp"
+#include "cli/step_counts.hpp"
 #include "cli/texture_frames.hpp"
 #include "io/atomic_file.hpp"
 #include "io/bubble_log.hpp"
@@ -197,7 +198,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
   }
   const double wall_start = omp_get_wtime();
   StepReport last;
-  DiagnosticsRow guards;  // the guard counters since the last output
+  StepCounts counts;  // the steps' counts since the last output
 
   auto writeOutput = [&]() {
     // Output and texture are stages of their own: what the solver's timer counts in here (the neighbour list and
@@ -222,36 +223,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
     }
     DiagnosticsRow row = diagnosticsOf(state, config, last, bubbles, wall_offset + omp_get_wtime() - wall_start,
                                        solver.constants().n0);
-    row.gas_capped = std::exchange(guards.gas_capped, 0);
-    row.collisions = std::exchange(guards.collisions, 0);
-    row.gradient_fallbacks = std::exchange(guards.gradient_fallbacks, 0);
-    row.thin_support = std::exchange(guards.thin_support, 0);
-    row.dispersed_gas = std::exchange(guards.dispersed_gas, 0);
-    row.entrained_swaps = std::exchange(guards.entrained_swaps, 0);
-    row.regularised_rows = std::exchange(guards.regularised_rows, 0);
-    row.gas_set_dt = std::exchange(guards.gas_set_dt, 0);
-    row.liquid_dt_steps = std::exchange(guards.liquid_dt_steps, 0.0);
-    row.entrained_gas = std::exchange(guards.entrained_gas, 0);
-    row.gas_correction_capped = std::exchange(guards.gas_correction_capped, 0);
-    row.gas_speed_capped = std::exchange(guards.gas_speed_capped, 0);
-    row.largest_shift = std::exchange(guards.largest_shift, 0.0);
-    row.shift_cuts = std::exchange(guards.shift_cuts, 0);
-    row.points_made = std::exchange(guards.points_made, 0);
-    row.points_released = std::exchange(guards.points_released, 0);
-    row.point_wall_stops = std::exchange(guards.point_wall_stops, 0);
-    row.points_unpaired = std::exchange(guards.points_unpaired, 0);
-    row.gap_water_floors = std::exchange(guards.gap_water_floors, 0);
-    row.vent_crowded_out = std::exchange(guards.vent_crowded_out, 0);
-    row.shift_wall_stops = std::exchange(guards.shift_wall_stops, 0);
-    row.respacing_wall_stops = std::exchange(guards.respacing_wall_stops, 0);
-    row.bubble_gas_wall_stops = std::exchange(guards.bubble_gas_wall_stops, 0);
-    row.respacing_cuts = std::exchange(guards.respacing_cuts, 0);
-    row.curvature_unfitted = std::exchange(guards.curvature_unfitted, 0);
-    row.collision_wall_limits = std::exchange(guards.collision_wall_limits, 0);
-    row.vent_liquid_stops = std::exchange(guards.vent_liquid_stops, 0);
-    row.neighbour_surfaces = std::exchange(guards.neighbour_surfaces, 0);
-    row.liquid_wall_collisions = std::exchange(guards.liquid_wall_collisions, 0);
-    row.points_coalesced = std::exchange(guards.points_coalesced, 0);
+    counts.moveInto(row);
     if (previous && row.time > previous->time) {
       row.inflow_rate = static_cast<double>(row.created - previous->created) / (row.time - previous->time);
       row.outflow_rate = static_cast<double>(row.removed - previous->removed) / (row.time - previous->time);
@@ -283,36 +255,7 @@ int run(const CaseConfig& config, const SimulateOptions& options, const std::str
       const double next_output = std::min(end_time, state.next_frame * interval);
       while (state.time < next_output - eps) {
         last = solver.step(next_output);
-        guards.gas_capped += static_cast<std::int64_t>(last.gas_corrections_capped);
-        guards.collisions += static_cast<std::int64_t>(last.collisions);
-        guards.gradient_fallbacks += static_cast<std::int64_t>(last.gradient_fallbacks);
-        guards.thin_support += static_cast<std::int64_t>(last.thin_support);
-        guards.dispersed_gas += static_cast<std::int64_t>(last.dispersed_gas);
-        guards.entrained_swaps += static_cast<std::int64_t>(last.entrained_gas_swaps);
-        guards.regularised_rows += static_cast<std::int64_t>(last.regularised_rows);
-        guards.gas_set_dt += last.dt_set_by_gas ? 1 : 0;
-        if (last.liquid_dt > 0.0) guards.liquid_dt_steps += last.dt / last.liquid_dt;
-        guards.entrained_gas += static_cast<std::int64_t>(last.entrained_gas);
-        guards.gas_correction_capped += static_cast<std::int64_t>(last.gas_correction_cuts);
-        guards.gas_speed_capped += static_cast<std::int64_t>(last.gas_speed_cuts);
-        guards.largest_shift = std::max(guards.largest_shift, last.largest_shift);
-        guards.shift_cuts += static_cast<std::int64_t>(last.shift_cuts);
-        guards.points_made += static_cast<std::int64_t>(last.bubble_points_made);
-        guards.points_released += static_cast<std::int64_t>(last.bubble_points_released);
-        guards.point_wall_stops += static_cast<std::int64_t>(last.bubble_point_wall_stops);
-        guards.points_unpaired += static_cast<std::int64_t>(last.bubble_points_unpaired);
-        guards.gap_water_floors += static_cast<std::int64_t>(last.gap_water_floors);
-        guards.vent_crowded_out += static_cast<std::int64_t>(last.vent_crowded_out);
-        guards.shift_wall_stops += static_cast<std::int64_t>(last.shift_wall_stops);
-        guards.respacing_wall_stops += static_cast<std::int64_t>(last.respacing_wall_stops);
-        guards.bubble_gas_wall_stops += static_cast<std::int64_t>(last.bubble_gas_wall_stops);
-        guards.respacing_cuts += static_cast<std::int64_t>(last.respacing_cuts);
-        guards.curvature_unfitted += static_cast<std::int64_t>(last.curvature_unfitted);
-        guards.collision_wall_limits += static_cast<std::int64_t>(last.collision_wall_limits);
-        guards.vent_liquid_stops += static_cast<std::int64_t>(last.vent_liquid_stops);
-        guards.neighbour_surfaces += static_cast<std::int64_t>(last.neighbour_surfaces);
-        guards.liquid_wall_collisions += static_cast<std::int64_t>(last.liquid_wall_collisions);
-        guards.points_coalesced += static_cast<std::int64_t>(last.bubble_points_coalesced);
+        counts.add(last);
         for (std::size_t v = 0; v < last.vented_in_by_vent.size() && v < vent_in.size(); ++v)
           vent_in[v] += last.vented_in_by_vent[v], vent_out[v] += last.vented_out_by_vent[v],
           vent_liquid[v] += last.vented_liquid_by_vent[v];

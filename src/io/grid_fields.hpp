@@ -19,6 +19,10 @@
 
 namespace mistfall {
 
+// More grid nodes than this is taken as a mistake in the cell size (it would need tens of GB): refused by the
+// sampler and the .vti reader.
+inline constexpr double kMaxGridNodes = 1e9;
+
 // The default sampling radius in particle spacings (R = 2.1 l0, the number-density radius of MPS).
 inline constexpr double kGridSamplingRadiusRatio = 2.1;
 

@@ -1,6 +1,6 @@
-// Sparse rows for the amg solver's own V-cycle (hypre_amg_solver.cpp): compressed rows borrowed from hypre or
-// Eigen, or owned; the transpose; dot products. Every operation gives the same bits on any
-// number of threads: a row is computed by one thread, in a fixed order, and sums are added in fixed chunks.
+// Sparse rows for the amg solver's own V-cycle (hypre_amg_solver.cpp, amg_cycle.hpp): compressed rows borrowed from
+// hypre or Eigen, or owned; the transpose; dot products. Every operation gives the same bits on any number of
+// threads: a row is computed by one thread, in a fixed order, and sums are added in fixed chunks.
 #pragma once
 
 #include <Eigen/Sparse>

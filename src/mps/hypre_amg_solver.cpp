@@ -5,7 +5,7 @@
 //  * matrix-vector products, restriction (with P^T stored as rows) and interpolation: one row per thread at a time;
 //  * the smoother: hybrid Gauss-Seidel in kBlocks fixed blocks of consecutive rows (Gauss-Seidel inside a block,
 //    Jacobi between blocks: what hypre does with kBlocks threads), a forward sweep down the cycle and a backward
-//    sweep up (the cycle is symmetric, as CG needs), a dense Cholesky solve on the coarsest level;
+//    sweep up (the cycle is symmetric, as CG needs), a dense Cholesky solve on the coarsest level (amg_cycle.hpp);
 //  * dot products: partial sums over kChunks fixed chunks of rows, added in order.
 // The hierarchy may be kept for the next systems (PreconditionerReuse, linear_solver.hpp): the cycle smooths with
 // the new matrix, only its coarse levels are old.
@@ -25,6 +25,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "mps/amg_cycle.hpp"
 #include "mps/amg_rows.hpp"
 #include "mps/linear_solver.hpp"
 #include "mps/mpi_environment.hpp"
@@ -35,13 +36,12 @@ namespace {
 
 using amg::dot;
 using amg::kParallelRows;
+using amg::Level;
 using amg::OwnedRows;
 using amg::Rows;
 using amg::rowsOf;
 using amg::transposeOf;
 
-constexpr int kBlocks = 8;   // smoother blocks at most (the results do not depend on the thread count)
-constexpr std::int64_t kMinBlockRows = 2048;  // rows per block at least (thin blocks smooth worse, and slower)
 constexpr std::int64_t kMaxDense = 2000;  // largest coarsest level solved densely
 
 // A ParCSR copy of `a` on MPI_COMM_SELF for hypre's setup: one diagonal block, each row's diagonal entry first.
@@ -159,7 +159,7 @@ class HypreAmgSolver final : public LinearSolver {
     amg_ = nullptr;
     if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
     setup_matrix_ = nullptr;
-    levels_.clear();
+    cycle_.levels.clear();
     setup_p0_ = Rows{};  // hypre's arrays are gone
     setup_row_of_.clear();
     keys_.clear();
@@ -169,36 +169,6 @@ class HypreAmgSolver final : public LinearSolver {
   const char* name() const override { return "amg"; }
 
  private:
-  struct Level {
-    Rows a;                   // the level's operator (level 0: the system being solved, set per solve)
-    Rows p;                   // interpolation from the next level (not on the coarsest)
-    OwnedRows pt;             // P^T
-    std::vector<int> block;   // per row: its smoother block
-    std::vector<char> inside; // per row: every column in the row's block
-    Eigen::VectorXd x, b, r, old;
-
-    int blocks() const {
-      return static_cast<int>(std::clamp<std::int64_t>(a.n / kMinBlockRows, 1, kBlocks));
-    }
-    // The blocks: consecutive stretches of rows, each smoothed in row order. Rows are numbered in particle order,
-    // which the spatial sort keeps by place (spatial_order.hpp), and hypre numbers a coarse level's points in the
-    // order of the fine rows, so a stretch of rows is a region of space on every level.
-    void setBlocks() {
-      const std::int64_t n = a.n;
-      block.resize(n);
-      inside.resize(n);
-      const int count = blocks();
-      for (int k = 0; k < count; ++k)
-        for (std::int64_t i = n * k / count; i < n * (k + 1) / count; ++i) block[i] = k;
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-      for (std::int64_t i = 0; i < n; ++i) {
-        bool in = true;
-        for (int k = a.start[i]; k < a.start[i + 1]; ++k) in = in && block[a.column[k]] == block[i];
-        inside[i] = in;
-      }
-    }
-  };
-
   // BoomerAMG's hierarchy for `a` (hypre's setup on one process), taken apart into levels.
   void setUp(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>* row_keys) {
     forget();
@@ -219,9 +189,9 @@ class HypreAmgSolver final : public LinearSolver {
     HYPRE_BoomerAMGSetup(amg_, m, nullptr, nullptr);
     auto* data = reinterpret_cast<hypre_ParAMGData*>(amg_);
     const int count = std::max(1, static_cast<int>(hypre_ParAMGDataNumLevels(data)));
-    levels_.resize(count);
+    cycle_.levels.resize(count);
     for (int l = 0; l < count; ++l) {
-      Level& level = levels_[l];
+      Level& level = cycle_.levels[l];
       if (l > 0) {
         level.a = rowsOf(hypre_ParAMGDataAArray(data)[l]);
         level.a.findDiagonal();
@@ -239,11 +209,11 @@ class HypreAmgSolver final : public LinearSolver {
       level.old.setZero(n);
     }
     useFine(a);
-    for (int l = 1; l < count; ++l) levels_[l].setBlocks();
+    for (int l = 1; l < count; ++l) cycle_.levels[l].setBlocks();
     // The coarsest level is solved exactly (dense Cholesky; LDLT if round-off leaves it semi-definite).
-    const Rows coarsest = count == 1 ? rowsOf(a) : levels_.back().a;
-    coarse_dense_ = coarsest.n <= kMaxDense;
-    if (coarse_dense_) factorCoarsest(coarsest);
+    const Rows coarsest = count == 1 ? rowsOf(a) : cycle_.levels.back().a;
+    cycle_.coarse_dense = coarsest.n <= kMaxDense;
+    if (cycle_.coarse_dense) cycle_.factorCoarsest(coarsest);
     if (row_keys) {
       keys_ = *row_keys;
       setup_row_of_.reserve(keys_.size());
@@ -258,7 +228,7 @@ class HypreAmgSolver final : public LinearSolver {
   // neighbours' rows weighted by its couplings to them (|a_rj|). False: a new setup.
   bool followRows(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::int64_t>& keys) {
     if (keys == keys_) return true;
-    if (levels_.size() < 2 || setup_row_of_.empty() || reuse_.kept_rows >= 1.0) return false;
+    if (cycle_.levels.size() < 2 || setup_row_of_.empty() || reuse_.kept_rows >= 1.0) return false;
     const auto& setup_p = setup_p0_;
     const std::int64_t n = static_cast<std::int64_t>(keys.size());
     std::vector<int> setup_row(n, -1);
@@ -279,7 +249,7 @@ class HypreAmgSolver final : public LinearSolver {
     const Rows fine_rows = rowsOf(a);
     std::vector<double> row_sum;  // the new row's interpolation, dense over the coarse points it touches
     std::vector<int> touched;
-    row_sum.assign(levels_[1].a.n, 0.0);
+    row_sum.assign(cycle_.levels[1].a.n, 0.0);
     for (std::int64_t r = 0; r < n; ++r) {
       if (setup_row[r] >= 0) {
         for (int k = setup_p.start[setup_row[r]]; k < setup_p.start[setup_row[r] + 1]; ++k) {
@@ -307,9 +277,9 @@ class HypreAmgSolver final : public LinearSolver {
       }
       p.start[r + 1] = static_cast<int>(p.column.size());
     }
-    Level& fine = levels_[0];
+    Level& fine = cycle_.levels[0];
     fine.p = p.rows();
-    fine.pt = transposeOf(fine.p, levels_[1].a.n);
+    fine.pt = transposeOf(fine.p, cycle_.levels[1].a.n);
     fine.x.setZero(n);
     fine.b.setZero(n);
     fine.r.setZero(n);
@@ -318,81 +288,12 @@ class HypreAmgSolver final : public LinearSolver {
     return true;
   }
 
-  void factorCoarsest(const Rows& coarsest) {
-    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(coarsest.n, coarsest.n);
-    for (std::int64_t i = 0; i < coarsest.n; ++i)
-      for (int k = coarsest.start[i]; k < coarsest.start[i + 1]; ++k) dense(i, coarsest.column[k]) = coarsest.value[k];
-    coarse_llt_.compute(dense);
-    coarse_ok_ = coarse_llt_.info() == Eigen::Success;
-    if (!coarse_ok_) coarse_ldlt_.compute(dense);
-  }
-
   // Level 0 is the system being solved.
   void useFine(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a) {
     fine_ = rowsOf(a);
     fine_.findDiagonal();
-    levels_[0].a = fine_;
-    levels_[0].setBlocks();
-  }
-
-  // One hybrid Gauss-Seidel sweep of level.x for level.a x = level.b (forward or backward through the rows):
-  // in parallel over the blocks, each block's rows in turn, the other blocks' values from before the sweep.
-  static void smooth(Level& level, bool forward) {
-    const Rows& a = level.a;
-    const std::int64_t n = a.n;
-    Eigen::VectorXd& x = level.x;
-    level.old = x;
-    const Eigen::VectorXd& old = level.old;
-    const Eigen::VectorXd& b = level.b;
-    const int blocks = level.blocks();
-#pragma omp parallel for schedule(static) if (n >= kParallelRows)
-    for (int block = 0; block < blocks; ++block) {
-      const std::int64_t first = n * block / blocks, last = n * (block + 1) / blocks;
-      auto relax = [&](std::int64_t i) {
-        const int d = a.diagonal[i];
-        double s = b[i];
-        if (level.inside[i]) {  // Gauss-Seidel: the newest values
-          for (int k = a.start[i]; k < d; ++k) s -= a.value[k] * x[a.column[k]];
-          for (int k = d + 1; k < a.start[i + 1]; ++k) s -= a.value[k] * x[a.column[k]];
-        } else {  // next to another block: its values from before the sweep (Jacobi between blocks)
-          for (int k = a.start[i]; k < a.start[i + 1]; ++k) {
-            if (k == d) continue;
-            const int j = a.column[k];
-            s -= a.value[k] * (level.block[j] == block ? x[j] : old[j]);
-          }
-        }
-        x[i] = s / a.value[d];
-      };
-      if (forward)
-        for (std::int64_t i = first; i < last; ++i) relax(i);
-      else
-        for (std::int64_t i = last - 1; i >= first; --i) relax(i);
-    }
-  }
-
-  // x = V-cycle(b) on level l (x starts from 0).
-  void cycle(std::size_t l) {
-    Level& level = levels_[l];
-    if (l + 1 == levels_.size()) {
-      if (coarse_dense_) {
-        level.x = coarse_ok_ ? Eigen::VectorXd(coarse_llt_.solve(level.b)) : Eigen::VectorXd(coarse_ldlt_.solve(level.b));
-      } else {  // a large system hypre did not coarsen: symmetric Gauss-Seidel
-        level.x.setZero();
-        smooth(level, true);
-        smooth(level, false);
-      }
-      return;
-    }
-    level.x.setZero();
-    smooth(level, true);
-    level.a.multiply(level.x, level.r);
-    level.r = level.b - level.r;
-    Level& next = levels_[l + 1];
-    level.pt.rows().multiply(level.r, next.b);
-    cycle(l + 1);
-    level.p.multiply(next.x, level.old);
-    level.x += level.old;
-    smooth(level, false);
+    cycle_.levels[0].a = fine_;
+    cycle_.levels[0].setBlocks();
   }
 
   // Preconditioned conjugate gradients from x; stops at |r| <= tolerance |b|. Returns the iterations.
@@ -406,9 +307,9 @@ class HypreAmgSolver final : public LinearSolver {
     const double goal = tolerance_ * tolerance_ * bb;
     double rr = dot(r_, r_);
     auto precondition = [&] {
-      levels_[0].b = r_;
-      cycle(0);
-      z_ = levels_[0].x;
+      cycle_.levels[0].b = r_;
+      cycle_.run(0);
+      z_ = cycle_.levels[0].x;
     };
     int iterations = 0;
     if (rr <= goal) return iterations;
@@ -441,12 +342,8 @@ class HypreAmgSolver final : public LinearSolver {
   PreconditionerReuse reuse_;
   HYPRE_Solver amg_ = nullptr;
   hypre_ParCSRMatrix* setup_matrix_ = nullptr;  // the matrix the hierarchy was built for (hypre's level 0)
-  std::vector<Level> levels_;
+  amg::VCycle cycle_;
   Rows fine_;
-  Eigen::LLT<Eigen::MatrixXd> coarse_llt_;
-  Eigen::LDLT<Eigen::MatrixXd> coarse_ldlt_;
-  bool coarse_ok_ = true;
-  bool coarse_dense_ = true;
   Eigen::VectorXd r_, z_, p_, q_;
   std::vector<std::int64_t> keys_;  // the rows of the system the kept hierarchy was last fitted to
   std::unordered_map<std::int64_t, int> setup_row_of_;  // key -> row of the set-up system

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest tools.plot_fields: tools/plot_fields.py draws the grid flow fields (.vti, as src/io/grid_fields.cpp writes
+# ctest tools.plot_fields: tools/plot_fields.py draws the grid flow fields (.vti, as src/io/vti_file.cpp writes
 # them) like Figs. 4-5 of the paper: velocity arrows and gas turbulence intensity, from ascii and binary-appended
 # files, 2D and 3D (middle slice), one file or a folder (--all); and fails cleanly (exit 1) on bad input.
 # Usage: test_plot_fields.sh SOURCE_DIR
