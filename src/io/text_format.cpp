@@ -82,6 +82,23 @@ static bool isNameChar(char c) {
          c == ':' || c == '.';
 }
 
+VtkXmlParts splitVtkFile(std::string_view doc) {
+  constexpr std::string_view kClose = "</VTKFile>";
+  const std::size_t last = doc.find_last_not_of(" \t\r\n");
+  if (last == std::string_view::npos || last + 1 < kClose.size() ||
+      doc.substr(last + 1 - kClose.size(), kClose.size()) != kClose)
+    throw std::runtime_error("missing </VTKFile> (truncated?)");
+  VtkXmlParts parts{doc, {}};
+  if (auto ad = findTag(doc, "AppendedData")) {
+    if (ad->attr("encoding") != "raw") throw std::runtime_error("only raw appended data is supported");
+    const std::size_t underscore = doc.find('_', ad->end);
+    if (underscore == std::string_view::npos) throw std::runtime_error("appended data has no '_' marker");
+    parts.header = doc.substr(0, ad->begin);
+    parts.appended = doc.substr(underscore + 1);
+  }
+  return parts;
+}
+
 std::optional<XmlTag> findTag(std::string_view doc, std::string_view element, std::size_t from) {
   std::size_t pos = from;
   while (true) {

@@ -31,6 +31,15 @@ struct XmlTag {
 // Throws std::runtime_error on an unterminated tag.
 std::optional<XmlTag> findTag(std::string_view doc, std::string_view element, std::size_t from = 0);
 
+// A VTK XML file read whole, split where its raw <AppendedData> starts: only the part before it is XML (the bytes
+// after its '_' marker may contain anything, '<' included). No appended data: `appended` is empty. Throws
+// std::runtime_error for a file that does not end in </VTKFile> (truncated: the appended bytes come before it) and
+// for appended data that is not raw or has no '_' marker; the readers add the file's name.
+struct VtkXmlParts {
+  std::string_view header, appended;
+};
+VtkXmlParts splitVtkFile(std::string_view doc);
+
 // Escapes &, <, >, " for use in an attribute value.
 std::string xmlEscape(std::string_view s);
 

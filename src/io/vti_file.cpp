@@ -120,21 +120,8 @@ ImageData readVti(const std::filesystem::path& file) {
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw std::runtime_error("error reading VTK ImageData file '" + file.string() + "'");
   try {
-    // A truncated file lacks the closing tag (the appended bytes come before it).
-    constexpr std::string_view kClose = "</VTKFile>";
-    const std::size_t last = doc.find_last_not_of(" \t\r\n");
-    if (last == std::string::npos || last + 1 < kClose.size() ||
-        std::string_view(doc).substr(last + 1 - kClose.size(), kClose.size()) != kClose)
-      fail(file, "missing </VTKFile> (truncated?)");
-    // Only the part before <AppendedData> is XML; the raw bytes after '_' may contain anything.
-    std::string_view header(doc), appended;
-    if (auto ad = text::findTag(header, "AppendedData")) {
-      if (ad->attr("encoding") != "raw") fail(file, "only raw appended data is supported");
-      const std::size_t underscore = doc.find('_', ad->end);
-      if (underscore == std::string::npos) fail(file, "appended data has no '_' marker");
-      header = std::string_view(doc).substr(0, ad->begin);
-      appended = std::string_view(doc).substr(underscore + 1);
-    }
+    // The XML header and the raw appended bytes (which may contain anything); a truncated file lacks the closing tag.
+    const auto [header, appended] = text::splitVtkFile(doc);
     auto root = text::findTag(header, "VTKFile");
     if (!root || root->attr("type") != "ImageData") fail(file, "not a VTK ImageData file");
     if (!appended.empty() && (root->attr("byte_order") != "LittleEndian" || root->attr("header_type") != "UInt64"))

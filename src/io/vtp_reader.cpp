@@ -112,23 +112,9 @@ void parseVtp(const std::filesystem::path& file, VtpDocument& d) {
 
   const std::string& doc = d.doc;
   try {
-    // Split the XML header from the raw appended bytes (which may contain anything, including '<').
-    std::string_view header(doc);
-    std::string_view appended;
-    if (auto ad = text::findTag(header, "AppendedData")) {
-      if (ad->attr("encoding") != "raw") fail(file, "only raw appended data is supported");
-      const std::size_t underscore = doc.find('_', ad->end);
-      if (underscore == std::string::npos) fail(file, "appended data has no '_' marker");
-      header = std::string_view(doc).substr(0, ad->begin);
-      appended = std::string_view(doc).substr(underscore + 1);
-    }
-    // A truncated file lacks the closing tag (the appended bytes come before it).
-    constexpr std::string_view kClose = "</VTKFile>";
-    const std::size_t last = doc.find_last_not_of(" \t\r\n");
-    if (last == std::string::npos || last + 1 < kClose.size() ||
-        std::string_view(doc).substr(last + 1 - kClose.size(), kClose.size()) != kClose) {
-      fail(file, "missing </VTKFile> (truncated?)");
-    }
+    // The XML header and the raw appended bytes (which may contain anything, including '<'); a truncated file lacks
+    // the closing tag.
+    const auto [header, appended] = text::splitVtkFile(doc);
     auto root = text::findTag(header, "VTKFile");
     if (!root || root->attr("type") != "PolyData") fail(file, "not a VTK PolyData file");
     if (!appended.empty() || text::findTag(header, "AppendedData")) {
