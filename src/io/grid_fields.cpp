@@ -3,17 +3,9 @@
 #include "io/grid_fields.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cctype>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
-#include <string_view>
 
-#include "io/atomic_file.hpp"
-#include "io/errors.hpp"
 #include "io/text_format.hpp"
 #include "mps/weight.hpp"
 

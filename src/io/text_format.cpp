@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 
 namespace mistfall::text {
@@ -97,6 +98,15 @@ VtkXmlParts splitVtkFile(std::string_view doc) {
     parts.appended = doc.substr(underscore + 1);
   }
   return parts;
+}
+
+void writeVtkFileEnd(std::ostream& os, std::string_view appended, bool ascii) {
+  if (!ascii) {
+    os << "  <AppendedData encoding=\"raw\">\n   _";
+    os.write(appended.data(), static_cast<std::streamsize>(appended.size()));
+    os << "\n  </AppendedData>\n";
+  }
+  os << "</VTKFile>\n";
 }
 
 std::optional<XmlTag> findTag(std::string_view doc, std::string_view element, std::size_t from) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <string>
@@ -39,6 +40,9 @@ struct VtkXmlParts {
   std::string_view header, appended;
 };
 VtkXmlParts splitVtkFile(std::string_view doc);
+// The end of a VTK XML file as splitVtkFile reads it: the raw <AppendedData> block holding `appended` (binary
+// files, `ascii` false), then </VTKFile>.
+void writeVtkFileEnd(std::ostream& os, std::string_view appended, bool ascii);
 
 // Escapes &, <, >, " for use in an attribute value.
 std::string xmlEscape(std::string_view s);

@@ -75,12 +75,7 @@ void writeVti(const std::filesystem::path& file, const ImageData& image, bool as
     for (const auto& a : image.arrays)
       writeDataArray(os, a.name, a.components, a.values, ascii, blob, "        ", false);
     os << "      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n";
-    if (!ascii) {
-      os << "  <AppendedData encoding=\"raw\">\n   _";
-      os.write(blob.data(), static_cast<std::streamsize>(blob.size()));
-      os << "\n  </AppendedData>\n";
-    }
-    os << "</VTKFile>\n";
+    text::writeVtkFileEnd(os, blob, ascii);
   });
 }
 

@@ -140,12 +140,7 @@ void writePointsVtp(const std::filesystem::path& file, const std::vector<double>
     writeArray(os, {"connectivity", 1, std::move(connectivity)}, ascii, blob, "        ", false);
     writeArray(os, {"offsets", 1, std::move(offsets)}, ascii, blob, "        ", false);
     os << "      </Verts>\n    </Piece>\n  </PolyData>\n";
-    if (!ascii) {
-      os << "  <AppendedData encoding=\"raw\">\n   _";
-      os.write(blob.data(), static_cast<std::streamsize>(blob.size()));
-      os << "\n  </AppendedData>\n";
-    }
-    os << "</VTKFile>\n";
+    text::writeVtkFileEnd(os, blob, ascii);
   });
 }
 
