@@ -82,3 +82,73 @@ TEST(WallSlip, InACornerAMoveIntoTheCornerIsTakenOff) {
   Vec<2> out(0.3 * kL0, 0.2 * kL0);
   EXPECT_FALSE(slideDisplacementAlongWalls<2>(0, position, nl, kRe, fixed, out));
 }
+
+// A move longer than one spacing reads the walls along its path (slideAlongWallsOnPath, WallCells): a floor of three
+// wall rows at y = 0, -1, -2 l0 (x = -20..20 l0), the particle at (0, 3.6 l0).
+namespace {
+
+struct ThickFloor {
+  std::vector<Vec<2>> position{Vec<2>(0.0, 3.6 * kL0)};
+  std::vector<ParticleKind> kind{ParticleKind::Fluid};
+  ThickFloor() {
+    for (int row = 0; row < 3; ++row)
+      for (int k = -20; k <= 20; ++k) position.push_back(Vec<2>(k * kL0, -row * kL0)), kind.push_back(ParticleKind::Wall);
+  }
+  WallCells<2> cells() const {
+    return WallCells<2>(position, [this](std::int32_t j) { return kind[j] == ParticleKind::Wall; }, kRe);
+  }
+};
+
+struct PathCase {
+  const char* what;
+  Vec<2> displacement;  // in l0
+  bool slid;
+  double lowest;        // the end's height above the floor's top row at least, in l0
+};
+
+}  // namespace
+
+TEST(WallSlip, ALongMoveSlidesAlongTheWallsOfItsWholePath) {
+  const ThickFloor floor;
+  const WallCells<2> walls = floor.cells();
+  const PathCase cases[] = {
+      // the traced re-spacing of the 5 mm waterfall: 10.8 l0 from 3.6 l0 above the floor, which is beyond re of the start
+      {"the traced jump into the floor stops above it", {7.9, -7.3}, true, 1.0},
+      {"straight down 6 l0: stops above the floor", {0.0, -6.0}, true, 1.0},
+      {"along the floor 8 l0: kept", {8.0, 0.0}, false, 3.6},
+      {"up and away 5 l0: kept", {1.0, 5.0}, false, 3.6},
+      {"one spacing down: left to the slide at its start", {0.0, -1.0}, false, 2.6},
+  };
+  for (const PathCase& c : cases) {
+    SCOPED_TRACE(c.what);
+    const Vec<2> before = c.displacement * kL0;
+    Vec<2> d = before;
+    EXPECT_EQ(c.slid, slideAlongWallsOnPath<2>(floor.position[0], walls, kL0, d));
+    EXPECT_GE(floor.position[0].y() + d.y(), c.lowest * kL0 - 1e-12);
+    if (!c.slid) EXPECT_EQ(before, d);  // to the bit
+    // Only the part into the walls is taken off: the part along the floor is kept, but for the lattice's tilt of the
+    // walls' first moment off the floor's normal between its particles.
+    EXPECT_NEAR(before.x(), d.x(), 0.1 * kL0);
+  }
+}
+
+// The binned walls give the first moment of the neighbour list's walls (the slide at the start reads those), and none
+// away from every wall.
+TEST(WallSlip, BinnedWallsGiveTheListsFirstMoment) {
+  const ThickFloor floor;
+  const WallCells<2> walls = floor.cells();
+  for (double height : {0.5, 1.0, 1.7, 2.05}) {
+    std::vector<Vec<2>> position = floor.position;
+    position[0] = Vec<2>(0.3 * kL0, height * kL0);
+    NeighbourList nl;
+    NeighbourSearch<2> search(Vec<2>(-0.3, -0.1), Vec<2>(0.3, 0.1), kRe);
+    search.build(position, floor.kind, nl);
+    const Vec<2> listed = neighbourhoodFirstMoment<2>(0, position, nl, kRe,
+                                                      [&](std::int32_t j) { return floor.kind[j] == ParticleKind::Wall; });
+    const Vec<2> binned = walls.firstMoment(position[0]);
+    EXPECT_GT(listed.norm(), 0.0);
+    EXPECT_NEAR(0.0, (binned - listed).norm(), 1e-9 * listed.norm());
+  }
+  EXPECT_EQ(Vec<2>::Zero(), walls.firstMoment(Vec<2>(0.0, 2.2 * kL0)));
+  EXPECT_EQ(Vec<2>::Zero(), walls.firstMoment(Vec<2>(5.0, 5.0)));
+}

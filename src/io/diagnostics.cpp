@@ -118,6 +118,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::points_coalesced>("points_coalesced"),
     column<&DiagnosticsRow::bubble_gas_wall_stops>("bubble_gas_wall_stops"),
     column<&DiagnosticsRow::curvature_unfitted>("curvature_unfitted"),
+    column<&DiagnosticsRow::long_respacings>("long_respacings"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

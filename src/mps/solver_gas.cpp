@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "mps/bubble_gas_motion.hpp"
 #include "mps/entrained_gas_rise.hpp"
@@ -233,8 +234,17 @@ void MpsSolver<D>::correctGas(double dt) {
   const double stop_distance = config_.numerics.collision_distance * constants_.l0;
   const double respacing_limit = config_.numerics.respacing_limit * constants_.l0;
   auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
-  std::size_t stops = 0, respacing_cuts = 0;
-#pragma omp parallel for schedule(static) reduction(+ : stops, respacing_cuts)
+  // A re-spacing longer than one spacing reads the walls along its path (wall_slip.hpp); they are binned only in a
+  // step that has one.
+  const double piece = constants_.l0;
+  const bool slip = config_.numerics.respacing_slip && !own_pressure;
+  bool long_move = false;
+  for (std::int64_t i = 0; slip && !long_move && i < n; ++i)
+    long_move = roles_.enclosed_gas[i] && dt * change[i].norm() > piece;
+  std::optional<WallCells<D>> walls;
+  if (long_move) walls.emplace(p.position, fixed, constants_.re_number_density);
+  std::size_t stops = 0, respacing_cuts = 0, long_respacings = 0;
+#pragma omp parallel for schedule(static) reduction(+ : stops, respacing_cuts, long_respacings)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
     const bool respacing = roles_.enclosed_gas[i] && !own_pressure;
@@ -242,11 +252,17 @@ void MpsSolver<D>::correctGas(double dt) {
     Vec<D> move = dt * change[i];
     if (respacing && respacing_limit > 0.0 && move.norm() > respacing_limit)
       move *= respacing_limit / move.norm(), ++respacing_cuts;
-    // numerics.respacing_walls = "slip": the re-spacing slides along the walls within re (wall_slip.hpp).
+    // numerics.respacing_walls = "slip": the re-spacing slides along the walls within re of its start and, when it is
+    // longer than one spacing, of each spacing of its path (wall_slip.hpp).
     bool stopped = false;
-    if (respacing && config_.numerics.respacing_slip)
+    if (respacing && slip) {
       stopped = slideDisplacementAlongWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_,
                                                constants_.re_number_density, fixed, move);
+      if (move.norm() > piece) {
+        ++long_respacings;
+        if (walls) stopped = slideAlongWallsOnPath<D>(p.position[i], *walls, piece, move) || stopped;
+      }
+    }
     if (respacing && wall_stop)
       stopped = stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
                                            fixed, move) || stopped;
@@ -255,6 +271,7 @@ void MpsSolver<D>::correctGas(double dt) {
   }
   report_.respacing_wall_stops = stops;
   report_.respacing_cuts = respacing_cuts;
+  report_.long_respacings = long_respacings;
   // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
   // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced), but a vent's gas, which its
   // column moves (gas_vent.hpp).
