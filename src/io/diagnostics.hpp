@@ -84,8 +84,9 @@ struct DiagnosticsRow {
   // A bubble's interface particles whose curvature had too few points to fit since the previous row
   // (numerics.bubble_surface_tension; particle-steps; they carry no jump, mps/interface_curvature.hpp).
   std::int64_t curvature_unfitted = 0;
-  // The gas system's re-spacings of a bubble's gas longer than one spacing since the previous row (particle-steps; with
-  // numerics.respacing_walls = "slip", after the slide at their start: slid along their path, mps/wall_slip.hpp).
+  // The gas system's re-spacings of a bubble's gas longer than one spacing as solved, before numerics.respacing_limit
+  // and the walls, since the previous row (particle-steps; with numerics.respacing_walls = "slip" one still longer
+  // after those slides along the walls of its whole path, mps/wall_slip.hpp).
   std::int64_t long_respacings = 0;
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).

@@ -250,6 +250,7 @@ void MpsSolver<D>::correctGas(double dt) {
     const bool respacing = roles_.enclosed_gas[i] && !own_pressure;
     if (!respacing) p.velocity[i] += change[i];
     Vec<D> move = dt * change[i];
+    long_respacings += respacing && move.norm() > piece;  // as solved, before a cut or a slide
     if (respacing && respacing_limit > 0.0 && move.norm() > respacing_limit)
       move *= respacing_limit / move.norm(), ++respacing_cuts;
     // numerics.respacing_walls = "slip": the re-spacing slides along the walls within re of its start and, when it is
@@ -258,10 +259,8 @@ void MpsSolver<D>::correctGas(double dt) {
     if (respacing && slip) {
       stopped = slideDisplacementAlongWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_,
                                                constants_.re_number_density, fixed, move);
-      if (move.norm() > piece) {
-        ++long_respacings;
-        if (walls) stopped = slideAlongWallsOnPath<D>(p.position[i], *walls, piece, move) || stopped;
-      }
+      if (walls && move.norm() > piece)
+        stopped = slideAlongWallsOnPath<D>(p.position[i], *walls, piece, move) || stopped;
     }
     if (respacing && wall_stop)
       stopped = stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_, stop_distance,
