@@ -119,6 +119,9 @@ TEST(WallSlip, ALongMoveSlidesAlongTheWallsOfItsWholePath) {
       {"up and away 5 l0: kept", {1.0, 5.0}, false, 3.6},
       {"one spacing down: left to the slide at its start", {0.0, -1.0}, false, 2.6},
   };
+  Vec<2> diverged(0.0, -1e7 * kL0);  // beyond max_pieces: left as it is, not walked
+  EXPECT_FALSE(slideAlongWallsOnPath<2>(floor.position[0], walls, kL0, diverged));
+  EXPECT_EQ(Vec<2>(0.0, -1e7 * kL0), diverged);
   for (const PathCase& c : cases) {
     SCOPED_TRACE(c.what);
     const Vec<2> before = c.displacement * kL0;

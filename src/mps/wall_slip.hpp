@@ -41,9 +41,12 @@ bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& posit
 // Removes from the component into the walls along `displacement`'s whole path from `start` (a move already slid at
 // its start, slideDisplacementAlongWalls): it is taken in pieces of at most `piece` (< re); at the end of each the
 // rest of it loses its component into the walls within re there (`walls`), d <- d - max(0, d . n) n as above.
-// Returns whether it changed it. A move no longer than `piece` is left as it is.
+// Returns whether it changed it. A move no longer than `piece` is left as it is, and so is one of more than
+// `max_pieces` pieces (a diverged move, not read step by step).
 template <int D>
-bool slideAlongWallsOnPath(const Vec<D>& start, const WallCells<D>& walls, double piece, Vec<D>& displacement) {
+bool slideAlongWallsOnPath(const Vec<D>& start, const WallCells<D>& walls, double piece, Vec<D>& displacement,
+                           double max_pieces = 1e5) {
+  if (!(displacement.norm() <= max_pieces * piece)) return false;
   Vec<D> at = start, rest = displacement;
   bool slid = false;
   while (rest.norm() > piece) {
