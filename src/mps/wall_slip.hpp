@@ -23,12 +23,9 @@
 
 namespace mistfall {
 
-// Removes from `displacement` of particle i its component into the walls (fixed(j)) within `re` (see above).
-// Returns whether it changed it.
-template <int D, class Fixed>
-bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
-                                 Fixed&& fixed, Vec<D>& displacement) {
-  const Vec<D> moment = neighbourhoodFirstMoment<D>(i, position, nl, re, fixed);
+// d <- d - max(0, d . n) n with n = moment / |moment| (the walls' first moment); whether it changed d.
+template <int D>
+bool removePartIntoWalls(const Vec<D>& moment, Vec<D>& displacement) {
   const double size = moment.norm();
   if (size <= 0.0) return false;
   const Vec<D> normal = moment / size;
@@ -36,6 +33,14 @@ bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& posit
   if (into <= 0.0) return false;
   displacement -= into * normal;
   return true;
+}
+
+// Removes from `displacement` of particle i its component into the walls (fixed(j)) within `re` (see above).
+// Returns whether it changed it.
+template <int D, class Fixed>
+bool slideDisplacementAlongWalls(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
+                                 Fixed&& fixed, Vec<D>& displacement) {
+  return removePartIntoWalls<D>(neighbourhoodFirstMoment<D>(i, position, nl, re, fixed), displacement);
 }
 
 // Removes from the component into the walls along `displacement`'s whole path from `start` (a move already slid at
@@ -52,12 +57,7 @@ bool slideAlongWallsOnPath(const Vec<D>& start, const WallCells<D>& walls, doubl
   while (rest.norm() > piece) {
     const Vec<D> step = rest * (piece / rest.norm());
     at += step, rest -= step;
-    const Vec<D> moment = walls.firstMoment(at);
-    const double size = moment.norm();
-    if (size <= 0.0) continue;
-    const Vec<D> normal = moment / size;
-    const double into = rest.dot(normal);
-    if (into > 0.0) rest -= into * normal, slid = true;
+    slid = removePartIntoWalls<D>(walls.firstMoment(at), rest) || slid;
   }
   if (slid) displacement = at + rest - start;
   return slid;
