@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 #include <string>
@@ -28,8 +29,8 @@ std::string bubbleKeysOf(const std::string& case_text) {
   static const std::set<std::string> keys = {
       "scheme",          "collision_distance",      "source_relaxation_basis",
       "gas_pressure_memory", "bubble_gas_motion",   "bubble_divergence",       "bubble_initial_pressure",
-      "shift_limit",     "respacing_limit",         "surface_neighbour_fraction", "surface_asymmetry",
-      "gas_collision_after_correction"};
+      "shift_limit",     "respacing_limit",         "respacing_walls",         "surface_neighbour_fraction", "surface_asymmetry",
+      "respacing_water_stop", "gas_collision_after_correction"};
   std::istringstream in(case_text);
   std::string line, table, out;
   while (std::getline(in, line)) {
@@ -78,6 +79,8 @@ TEST_P(WaterfallBubbles, ABubbleRisesWithTheCasesKeys) {
   ASSERT_EQ(bubble_gas.size(), found);
   end_y /= static_cast<double>(found);
   const double law = 0.5 * std::sqrt(9.81 * 0.0225);
+  std::printf("%s: the bubble's gas rose %.2f cm in %.2f s (the law's distance %.2f cm)\n", GetParam(),
+              100.0 * (end_y - start_y), end, 100.0 * law * end);
   EXPECT_GT(end_y - start_y, 0.5 * law * end) << GetParam() << " with\n" << keys << "the gas rose "
                                                << 100.0 * (end_y - start_y) << " cm in " << end << " s";
 }
