@@ -76,7 +76,7 @@ TEST(WallStop, ADisplacementKeepsWhatDoesNotApproachAWallWithinTheCollisionDista
 // Only the particles the caller names stop a displacement: with the walls alone, water in the way does not (the
 // re-spacing between fluid particles is the stage's purpose; stopping it against the water as well lost 15 and 2
 // particles on waterfall_small in the twenty-fifth session, before the stabilised scheme; since the forty-ninth
-// numerics.respacing_water_stop names the water too, below).
+// numerics.respacing_stop names the water, or every fluid particle, too: below).
 TEST(WallStop, WaterInTheWayDoesNotStopADisplacement) {
   const Floor floor(/*water_below=*/true);
   Vec<2> d(0.0, -0.15 * kL0);  // towards the water 0.5 l0 below, to 0.85 l0 above the floor
@@ -87,8 +87,8 @@ TEST(WallStop, WaterInTheWayDoesNotStopADisplacement) {
   EXPECT_NEAR(0.0, onto.y(), 1e-15);
 }
 
-// numerics.respacing_water_stop: a bubble's gas re-spaced towards the water around the bubble, the water named as the
-// walls (solver_gas.cpp). A bubble of the nine lattice points within 1.5 l0 of the origin (gas) in water on the lattice
+// numerics.respacing_stop = "water": a bubble's gas re-spaced towards the water around the bubble, the water named as
+// the walls (solver_gas.cpp); "fluid" names the bubble's own gas as well. A bubble of the nine lattice points within 1.5 l0 of the origin (gas) in water on the lattice
 // to 5 l0; the moving particle is the gas at the bubble's right edge, (1, 0) l0.
 TEST(WallStop, ABubblesGasReSpacedOntoTheWaterAroundItStopsAtTheCollisionDistance) {
   std::vector<Vec<2>> position{Vec<2>(kL0, 0.0)};
@@ -126,6 +126,11 @@ TEST(WallStop, ABubblesGasReSpacedOntoTheWaterAroundItStopsAtTheCollisionDistanc
     EXPECT_NEAR(c.kept.y() * kL0, d.y(), 1e-15);
     EXPECT_GE(nearestWater(position[0] + d), kStop - 1e-15);
   }
+  // With every fluid particle named ("fluid"), the move onto its own gas at (0, 0) is stopped too.
+  auto fluid = [&](std::int32_t j) { return kind[j] == ParticleKind::Fluid; };
+  Vec<2> onto_gas(-0.9 * kL0, 0.0);
+  EXPECT_TRUE(stopDisplacementAtWalls<2>(0, position, nl, kStop, fluid, onto_gas));
+  EXPECT_NEAR(0.0, onto_gas.norm(), 1e-15);
 }
 
 namespace {

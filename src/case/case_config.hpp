@@ -152,10 +152,12 @@ struct NumericsConfig {
   // walls within re (wall_slip.hpp; the no-penetration condition on the displacement; counted with the stops:
   // respacing_wall_stops); "free" (default): it is not told about the walls
   bool respacing_slip = false;
-  // numerics.respacing_water_stop: the gas system's re-spacing of a bubble's gas does not approach a water particle it
-  // would bring within collision_distance (wall_stop.hpp with the water as the walls: the water is the bubble's other
-  // wall; counted: respacing_water_stops in diagnostics.csv)
-  bool respacing_water_stop = false;
+  // numerics.respacing_stop (a guard, counted: respacing_fluid_stops in diagnostics.csv): the gas system's re-spacing
+  // of a bubble's gas does not approach a particle it would bring within collision_distance (wall_stop.hpp with these
+  // particles as the walls): "water" the water around the bubble (its other wall), "fluid" every fluid particle, the
+  // bubble's own gas too; "none" (default) neither
+  enum class RespacingStop { None, Water, Fluid };
+  RespacingStop respacing_stop = RespacingStop::None;
   double radius_number_density = 2.1;   // re / l0 for number density and gradient
   double radius_laplacian = 3.1;        // re / l0 for the Laplacian (13)
   double courant = 0.2;                 // dt <= courant * l0 / max|u|

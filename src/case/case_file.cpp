@@ -138,7 +138,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
                {"particle_spacing", "scheme", "liquid_support_fraction", "thin_row_pressure", "gradient_correction_min_determinant",
-                "pressure_repulsion", "particle_shifting", "shift_limit", "shift_wall_stop", "bubble_gas_wall_stop", "respacing_limit", "respacing_walls", "respacing_water_stop", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
+                "pressure_repulsion", "particle_shifting", "shift_limit", "shift_wall_stop", "bubble_gas_wall_stop", "respacing_limit", "respacing_walls", "respacing_stop", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "surface_asymmetry", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
@@ -166,7 +166,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.boolean(nm, np, "bubble_gas_wall_stop", n.bubble_gas_wall_stop);
   rd.number(nm, np, "respacing_limit", {0.0, 10.0, false, false}, n.respacing_limit);
   if (int s = rd.choice(nm, np, "respacing_walls", {"free", "slip"}); s >= 0) n.respacing_slip = s == 1;
-  rd.boolean(nm, np, "respacing_water_stop", n.respacing_water_stop);
+  if (int s = rd.choice(nm, np, "respacing_stop", {"none", "water", "fluid"}); s >= 0)
+    n.respacing_stop = static_cast<NumericsConfig::RespacingStop>(s);
   rd.number(nm, np, "radius_number_density", {1.5, 5.0, false, false}, n.radius_number_density);
   rd.number(nm, np, "radius_laplacian", {1.5, 5.0, false, false}, n.radius_laplacian);
   rd.number(nm, np, "courant", {0.0, 1.0, true, false}, n.courant);

@@ -35,7 +35,7 @@ constexpr CountColumn kCounts[] = {
     {&DiagnosticsRow::bubble_gas_wall_stops, &StepReport::bubble_gas_wall_stops},
     {&DiagnosticsRow::curvature_unfitted, &StepReport::curvature_unfitted},
     {&DiagnosticsRow::long_respacings, &StepReport::long_respacings},
-    {&DiagnosticsRow::respacing_water_stops, &StepReport::respacing_water_stops},
+    {&DiagnosticsRow::respacing_fluid_stops, &StepReport::respacing_fluid_stops},
     {&DiagnosticsRow::points_made, &StepReport::bubble_points_made},
     {&DiagnosticsRow::points_released, &StepReport::bubble_points_released},
     {&DiagnosticsRow::point_wall_stops, &StepReport::bubble_point_wall_stops},

@@ -119,7 +119,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::bubble_gas_wall_stops>("bubble_gas_wall_stops"),
     column<&DiagnosticsRow::curvature_unfitted>("curvature_unfitted"),
     column<&DiagnosticsRow::long_respacings>("long_respacings"),
-    column<&DiagnosticsRow::respacing_water_stops>("respacing_water_stops"),
+    column<&DiagnosticsRow::respacing_fluid_stops>("respacing_fluid_stops"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

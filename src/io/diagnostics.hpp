@@ -87,9 +87,9 @@ struct DiagnosticsRow {
   // The gas system's re-spacings of a bubble's gas longer than one spacing as solved, before numerics.respacing_limit
   // and any slide along the walls or the water (mps/wall_slip.hpp), since the previous row (particle-steps).
   std::int64_t long_respacings = 0;
-  // Since the previous row, the re-spacings of a bubble's gas whose approach to a water particle within
-  // collision_distance numerics.respacing_water_stop took off (mps/wall_stop.hpp; particle-steps)
-  std::int64_t respacing_water_stops = 0;
+  // Since the previous row, the re-spacings of a bubble's gas whose approach to a particle within collision_distance
+  // numerics.respacing_stop took off (the water's, or every fluid particle's; mps/wall_stop.hpp; particle-steps)
+  std::int64_t respacing_fluid_stops = 0;
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).
   std::int64_t collision_wall_limits = 0;

@@ -103,7 +103,7 @@ struct StepReport {
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it, bubble_gas_wall_stop or respacing_walls
   std::size_t bubble_gas_wall_stops = 0; // a bubble gas's moves with the water stopped at a wall (bubble_gas_wall_stop)
   std::size_t respacing_cuts = 0;       // a bubble gas's re-spacings shortened to numerics.respacing_limit
-  std::size_t respacing_water_stops = 0;  // a bubble gas's re-spacings stopped at the water (respacing_water_stop)
+  std::size_t respacing_fluid_stops = 0;  // a bubble gas's re-spacings stopped at a fluid particle (respacing_stop)
   std::size_t long_respacings = 0;      // a bubble gas's re-spacings longer than l0 as solved (before a cut or a slide)
   std::size_t curvature_unfitted = 0;   // bubble interface particles with no curvature fit (bubble_surface_tension)
   std::size_t vent_crowded_out = 0;    // gas that entered a vent within l0/2 of its column's gas, let out (gas_vent.cpp)

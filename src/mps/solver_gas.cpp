@@ -243,26 +243,34 @@ void MpsSolver<D>::correctGas(double dt) {
     long_move = roles_.enclosed_gas[i] && dt * change[i].norm() > piece;
   std::optional<WallCells<D>> walls;
   if (long_move) walls.emplace(p.position, fixed, constants_.re_number_density);
-  // numerics.respacing_water_stop: the water around a bubble is its gas's other wall; the re-spacing does not approach
-  // a water particle it would bring within collision_distance (wall_stop.hpp), before the cut and the walls. Traced at
-  // 5 mm, a bubble's gas re-spaced 1.4 l0 came to 0.14 l0 from a water particle, the next liquid correction gave that
-  // water 18 m/s, and the cascade re-spaced gas 10.8 l0 (docs/waterfall.md). A slide along the water's first moment
-  // instead (as along the walls) kept the gas from following the water where it opens the bubble's top: the coarse
-  // bubble of tests/test_waterfall_bubbles.cpp rose 0.39 cm in 0.12 s, 2.36 cm with the stop. The water is not moved
-  // in this loop, so reading it while the gas moves is safe.
-  const bool water_stop = config_.numerics.respacing_water_stop && !own_pressure;
-  auto water = [&](std::int32_t j) { return p.kind[j] == ParticleKind::Fluid && p.phase[j] == Phase::Liquid; };
-  std::size_t stops = 0, respacing_cuts = 0, long_respacings = 0, water_stops = 0;
-#pragma omp parallel for schedule(static) reduction(+ : stops, respacing_cuts, long_respacings, water_stops)
+  // numerics.respacing_stop (a guard, counted): the re-spacing does not approach a particle it would bring within
+  // collision_distance (wall_stop.hpp), before the cut and the walls: "water", the water around a bubble, its gas's
+  // other wall; "fluid", every fluid particle, the bubble's own gas too. Traced at 5 mm, a bubble's gas re-spaced
+  // 1.4 l0 came to 0.14 l0 from a water particle, the next liquid correction gave that water 18 m/s, and the cascade
+  // re-spaced gas 10.8 l0; in a stiff joined bubble at 1.25 mm two of its gas particles re-spaced onto each other
+  // (n = 18.6 n0 / 6.6) were re-spaced 42 l0 into the walls the step after (docs/waterfall.md, docs/validation.md). A
+  // slide along the water's first moment instead (as along the walls) kept the gas from following the water where it
+  // opens the bubble's top: the coarse bubble of tests/test_waterfall_bubbles.cpp rose 0.39 cm in 0.12 s, 2.36 cm with
+  // the stop. With "fluid" the loop runs in index order on one thread and the stop reads the gas already moved where it
+  // is now (the same bits on any thread count): read at the loop's start instead, two gas particles re-spaced into the
+  // same gap met there, and the 1.25 mm bubble diverged at 83 ms. The water does not move in the loop.
+  using Stop = NumericsConfig::RespacingStop;
+  const Stop stop_at = own_pressure ? Stop::None : config_.numerics.respacing_stop;
+  auto stopsRespacing = [&](std::int32_t j) {
+    return p.kind[j] == ParticleKind::Fluid && (stop_at == Stop::Fluid || p.phase[j] == Phase::Liquid);
+  };
+  std::size_t stops = 0, respacing_cuts = 0, long_respacings = 0, fluid_stops = 0;
+#pragma omp parallel for schedule(static) reduction(+ : stops, respacing_cuts, long_respacings, fluid_stops) \
+    if (stop_at != Stop::Fluid)
   for (std::int64_t i = 0; i < n; ++i) {
     if (!roles_.inGasSystem(i)) continue;
     const bool respacing = roles_.enclosed_gas[i] && !own_pressure;
     if (!respacing) p.velocity[i] += change[i];
     Vec<D> move = dt * change[i];
     long_respacings += respacing && move.norm() > piece;  // as solved, before a cut or a slide
-    if (respacing && water_stop)
-      water_stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_,
-                                                 stop_distance, water, move);
+    if (respacing && stop_at != Stop::None)
+      fluid_stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, near_neighbours_,
+                                                stop_distance, stopsRespacing, move);
     if (respacing && respacing_limit > 0.0 && move.norm() > respacing_limit)
       move *= respacing_limit / move.norm(), ++respacing_cuts;
     // numerics.respacing_walls = "slip": the re-spacing slides along the walls within re of its start and, when it is
@@ -283,7 +291,7 @@ void MpsSolver<D>::correctGas(double dt) {
   report_.respacing_wall_stops = stops;
   report_.respacing_cuts = respacing_cuts;
   report_.long_respacings = long_respacings;
-  report_.respacing_water_stops = water_stops;
+  report_.respacing_fluid_stops = fluid_stops;
   // numerics.gas_operators = "stabilised": the open gas is shifted as the stabilised liquid is (particle_shifting.hpp,
   // every active neighbour in the sum: the corrected gradient keeps nothing evenly spaced), but a vent's gas, which its
   // column moves (gas_vent.hpp).

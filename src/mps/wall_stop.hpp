@@ -11,7 +11,7 @@
 // (numerics.collision_distance) while d_i approaches it,
 //   d_i <- d_i - (d_i . e_ij) e_ij,   e_ij = (r_j - r_i) / |r_j - r_i|,
 // in the order of the neighbour list. The displacement along the wall is kept, and so is any displacement between
-// fluid particles the caller does not name. numerics.respacing_water_stop (forty-ninth session) names the water as
+// fluid particles the caller does not name. numerics.respacing_stop (forty-ninth session) names the water as
 // well for a bubble gas's re-spacing: the water around a bubble is its gas's other wall, and a re-spacing traced at
 // 5 mm brought a gas particle to 0.14 l0 from the water, which the next liquid correction threw at 18 m/s. (Stopping
 // the re-spacing against the water was tried in the twenty-fifth session, on the paper scheme: it lost 15 and 2
