@@ -70,18 +70,7 @@ echo "== the waterfall with air, cases/waterfall_small.toml over 8.5 s (no gas g
 echo "   nappe (Rouse), the air-flow pattern of the paper's Figs. 4-5, plunging-jet aeration, the pool's air and packing"
 run_case waterfall_small
 tools_dir="$(dirname "${BASH_SOURCE[0]}")"
-/usr/bin/python3 - "$out/waterfall_small/diagnostics.csv" <<'PY' || true
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-last = rows[-1]
-total = lambda k: sum(float(r[k]) for r in rows)
-print(f"t = {float(last['time']):.2f} s, {last['step']} steps; escaped {last['escaped']}; guards over the run: "
-      f"collisions {total('collisions'):.0f}, gas_correction_capped {total('gas_correction_capped'):.0f}, "
-      f"gas_speed_capped {total('gas_speed_capped'):.0f}, dispersed_gas {total('dispersed_gas'):.0f}, "
-      f"entrained_swaps {total('entrained_swaps'):.0f}, points_unpaired {total('points_unpaired'):.0f}, "
-      f"shift_cuts {total('shift_cuts'):.0f}, liquid_wall_collisions {total('liquid_wall_collisions'):.0f}, "
-      f"points_coalesced {total('points_coalesced'):.0f} of {total('points_made'):.0f} made")
-PY
+/usr/bin/python3 "$tools_dir/guard_counts.py" "$out/waterfall_small" || true   # every guard: firings and its key
 /usr/bin/python3 "$tools_dir/overfall_profile.py" "$out/waterfall_small" --from 2 | grep -E "last l0|^nappe" || true
 /usr/bin/python3 "$tools_dir/air_flow_pattern.py" "$out/waterfall_small" --from 2 | tail -n 5 || true
 /usr/bin/python3 "$tools_dir/aeration_depth.py" "$out/waterfall_small" --from 2 | grep -E "^air under|^jet  *measured" || true
