@@ -278,6 +278,34 @@ TEST(TwoPhaseTimeStep, DivergenceNamesTheFastestParticle) {
   }
 }
 
+// A particle with nothing of its pressure system within reach gives its row no diagonal, and the solve would return
+// NaN, the run ending on a non-finite particle elsewhere (traced: a stiff joined bubble's gas re-spaced 7 l0 into the
+// floor, docs/validation.md). The step stops before the solve, naming the row's particle.
+TEST(TwoPhaseTimeStep, AnEmptyRowStopsTheStepNamingItsParticle) {
+  // The tank's water over a floor 10 l0 thick, of which the rows below the first few are dummies: they count in the
+  // number density but hold no pressure.
+  const std::string text = "[case]\nname = \"sunk\"\ndimension = 2\n[domain]\nmin = [-0.05, -0.05]\n"
+                           "max = [0.15, 0.12]\n[numerics]\nparticle_spacing = 0.005\ndt_max = 5e-4\n[output]\n"
+                           "end_time = 1.0\n[[region]]\nname = \"water\"\nmaterial = \"water\"\nmin = [0.0, 0.0]\n"
+                           "max = [0.1, 0.06]\n" + test_support::tankWalls(0.1, 0.09, 0.05);
+  TankRun run(text);
+  auto& p = run.state.particles;
+  std::size_t sunk = p.size();
+  for (std::size_t i = 0; i < p.size() && sunk == p.size(); ++i)
+    if (p.kind[i] == ParticleKind::Fluid) sunk = i;
+  ASSERT_LT(sunk, p.size());
+  p.position[sunk] = Vec<2>{0.05, -0.03};  // 6 l0 into the floor, 4 l0 above its bottom, between its lattice points
+  const std::string id = "particle id " + std::to_string(p.id[sunk]) + ", liquid";
+  try {
+    run.solver->step(1.0);
+    ADD_FAILURE() << "no divergence";
+  } catch (const DivergenceError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(id), std::string::npos) << what;
+    EXPECT_NE(what.find("no diagonal"), std::string::npos) << what;
+  }
+}
+
 // The coarse bubble for 0.15 s: the bubble stays one body with bounded pressure and rises, the water
 // surface far from it stays flat, and no particle of either phase is lost.
 TEST(TwoPhaseBubble, CoarseBubbleRisesAsOneBodyWithBoundedPressure) {

@@ -135,6 +135,7 @@ class MpsSolver {
   double maxFluidSpeed() const;
   std::pair<double, double> maxPhaseSpeeds() const;  // fastest liquid and gas particle [m/s]
   std::string fastestParticle() const;               // its id, phase, role and place, in words
+  std::string describeParticle(std::size_t i) const;  // the same for particle i
   // The last kRecentSteps steps' time, dt and fastest fluid particle, as CSV with a header line, oldest first (for
   // diverged.txt: which particle shortened the step before a divergence).
   std::string recentStepsCsv() const;
@@ -227,6 +228,8 @@ class MpsSolver {
   void removeReleasedPoints();
   // Solves system_ with initial guess from `guess`; throws DivergenceError naming `which` when it fails.
   void solveSystem(const std::vector<double>& guess, const char* which, int& iterations);
+  // Throws DivergenceError naming the particle of the first row of `a` whose diagonal is zero or not finite.
+  void checkDiagonal(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const char* which) const;
   void solveLinear(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    const char* which, int& iterations);
   void markEscaped();

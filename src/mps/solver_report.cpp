@@ -27,10 +27,16 @@ std::string MpsSolver<D>::fastestParticle() const {
   const auto& p = state_.particles;
   const std::size_t fastest = fluidSpeeds().fastest;
   if (fastest == p.size()) return "no fluid particle";
+  return describeParticle(fastest);
+}
+
+template <int D>
+std::string MpsSolver<D>::describeParticle(std::size_t i) const {
+  const auto& p = state_.particles;
   std::ostringstream out;
-  out << "particle id " << p.id[fastest] << ", " << roleOf(fastest) << ", at (";
-  for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[fastest][d];
-  out << ") m, pressure " << p.pressure[fastest] << " Pa";
+  out << "particle id " << p.id[i] << ", " << roleOf(i) << ", at (";
+  for (int d = 0; d < D; ++d) out << (d ? ", " : "") << p.position[i][d];
+  out << ") m, pressure " << p.pressure[i] << " Pa";
   return out.str();
 }
 
@@ -145,6 +151,7 @@ void MpsSolver<D>::checkHealth(double) const {
 #define MISTFALL_INSTANTIATE(D) \
   template double MpsSolver<D>::maxFluidSpeed() const; \
   template const char* MpsSolver<D>::roleOf(std::size_t) const; \
+  template std::string MpsSolver<D>::describeParticle(std::size_t) const; \
   template std::string MpsSolver<D>::fastestParticle() const; \
   template void MpsSolver<D>::recordStep(double, std::size_t); \
   template std::string MpsSolver<D>::recentStepsCsv() const; \
