@@ -72,7 +72,7 @@ void MpsSolver<D>::checkDiagonal(const Eigen::SparseMatrix<double, Eigen::RowMaj
     std::ostringstream msg;
     msg << which << " pressure system: the row of "
         << (of >= 0 ? describeParticle(static_cast<std::size_t>(of)) : "bubble " + std::to_string(-1 - of) + "'s unknown")
-        << " has " << (diagonal == 0.0 ? "no diagonal" : "a non-finite diagonal")
+        << ", has " << (diagonal == 0.0 ? "no diagonal" : "a non-finite diagonal")
         << ": nothing of the system within its reach (a particle inside a wall?)";
     throw DivergenceError(msg.str(), state_.time, state_.step);
   }
