@@ -3,13 +3,15 @@
 //  * on a full lattice nothing is shifted at any speed, and on a free-surface row's (cut) lattice nothing either
 //    once the normal part is removed;
 //  * a particle whose neighbour crowds it from one side moves away from it, by A l0 |u| dt D0/n0 |first moment|;
-//  * numerics.shift_limit cuts a close pair's shift to its length and counts it;
+//  * numerics.shift_limit cuts a close pair's shift to its length and counts it; with shifting_kernel = "wendland" a
+//    close pair's shift is bounded whatever its distance;
 //  * a water particle on an even interface with air is not shifted into the air when the air counts in the sum.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -33,14 +35,17 @@ void checkNoShiftAtRestOrOnALattice(Shape shape) {
   const auto nl = neighboursOf<D>(x, c.re_laplacian);
   Vec<D> normal = Vec<D>::Zero();
   normal[D - 1] = -1.0;  // the pressure gradient's direction under a free surface
-  const Vec<D> at_rest = shiftingDisplacement<D>(0, x, nl, c, 2.0, Vec<D>::Zero(), 1e-3, Vec<D>::Zero(), all);
-  EXPECT_EQ(at_rest.norm(), 0.0);
-  const Vec<D> moving = Vec<D>::Constant(0.5);
-  if (shape == Shape::Full)
-    EXPECT_LT(shiftingDisplacement<D>(0, x, nl, c, 2.0, moving, 1e-3, Vec<D>::Zero(), all).norm(), 1e-15);
-  if (shape == Shape::CutAbove) {
-    EXPECT_GT(shiftingDisplacement<D>(0, x, nl, c, 2.0, moving, 1e-3, Vec<D>::Zero(), all).norm(), 1e-7);
-    EXPECT_LT(shiftingDisplacement<D>(0, x, nl, c, 2.0, moving, 1e-3, normal, all).norm(), 1e-15);
+  for (const auto kernel : {NumericsConfig::ShiftingKernel::Mps, NumericsConfig::ShiftingKernel::Wendland}) {
+    auto shift = [&](const Vec<D>& u, const Vec<D>& n) {
+      return shiftingDisplacement<D>(0, x, nl, c, 2.0, u, 1e-3, n, all, kernel);
+    };
+    EXPECT_EQ(shift(Vec<D>::Zero(), Vec<D>::Zero()).norm(), 0.0);
+    const Vec<D> moving = Vec<D>::Constant(0.5);
+    if (shape == Shape::Full) EXPECT_LT(shift(moving, Vec<D>::Zero()).norm(), 1e-15);
+    if (shape == Shape::CutAbove) {
+      EXPECT_GT(shift(moving, Vec<D>::Zero()).norm(), 1e-7);
+      EXPECT_LT(shift(moving, normal).norm(), 1e-15);
+    }
   }
 }
 
@@ -70,6 +75,36 @@ TEST(ParticleShifting, MovesAwayFromACrowdingNeighbourByTheFormula) {
   EXPECT_LT(shift.x(), 0.0);
   EXPECT_NEAR(shift.x(), -2.0 * kL0 * 0.3 * 1e-3 * 2.0 / c.n0 * first.x(), 1e-12 * kL0);
   EXPECT_NEAR(shift.y(), 0.0, 1e-15);
+}
+
+// numerics.shifting_kernel = "wendland": a full 2D lattice whose neighbour at +x sits at d instead of l0 (moving at
+// 0.3 m/s, dt = 1 ms, A = 2). The shift is -A h |u| dt l0^2 (f(d) - f(l0)) along x, f(r) = 5 alpha q (1 - q/2)^3 / h
+// the kernel's |dW/dr| (q = r / h, h = re / 2), the rest of the lattice summing to -f(l0): at most 1.055 alpha l0^2
+// A |u| dt for any d, where the MPS weight's first moment grows as 1/d^2 (at d = 0.01 l0 over 10^4 times more).
+TEST(ParticleShifting, TheWendlandShiftOfACloseNeighbourIsBoundedWhereTheMpsOneIsNot) {
+  const MpsConstants c = referenceConstants(2, kL0, 2.1, 3.1);
+  const double h = 0.5 * c.re_number_density, alpha = 7.0 / (4.0 * std::numbers::pi * h * h), a = 2.0, step = 0.3e-3;
+  auto f = [&](double r) {
+    const double q = r / h;
+    return 5.0 * alpha * q * std::pow(1.0 - 0.5 * q, 3) / h;
+  };
+  const double bound = 1.055 * alpha * kL0 * kL0 * a * step;
+  for (const double d : {0.9, 0.6, 0.3, 0.1, 0.01}) {
+    auto x = lattice<2>(Shape::Full);
+    for (auto& r : x)
+      if ((r - Vec<2>(kL0, 0.0)).norm() < 1e-12) r = Vec<2>(d * kL0, 0.0);
+    const auto nl = neighboursOf<2>(x, c.re_laplacian);
+    auto shift = [&](NumericsConfig::ShiftingKernel kernel) {
+      return shiftingDisplacement<2>(0, x, nl, c, a, Vec<2>(0.0, 0.3), 1e-3, Vec<2>::Zero(), all, kernel);
+    };
+    const Vec<2> wendland = shift(NumericsConfig::ShiftingKernel::Wendland);
+    const Vec<2> mps = shift(NumericsConfig::ShiftingKernel::Mps);
+    EXPECT_NEAR(wendland.x(), -a * h * step * kL0 * kL0 * (f(d * kL0) - f(kL0)), 1e-12 * kL0) << d;
+    EXPECT_NEAR(wendland.y(), 0.0, 1e-15) << d;
+    EXPECT_LT(wendland.norm(), bound) << d;
+    if (d >= 0.6) EXPECT_LT(wendland.x(), 0.0) << d;  // moved away from the crowding neighbour
+    if (d <= 0.01) EXPECT_GT(mps.norm(), 1e4 * wendland.norm()) << d;
+  }
 }
 
 // A water particle on a flat interface with air above it (the full lattice, its upper half air), moving along it,

@@ -134,6 +134,12 @@ struct NumericsConfig {
   // A of the particle shifting after the correction (particle_shifting.hpp), delta r = -A l0 |u| dt P grad C: zero at
   // rest; 0 = none
   double particle_shifting = 3.0;
+  // The concentration gradient of the shift (particle_shifting.hpp): "mps", the first moment of the MPS weight,
+  // sum r w / r^2, which grows as 1/r^2 for a close pair; "wendland", the gradient of the Wendland C2 kernel of
+  // support re as Lind et al. (2012) and Skillen et al. (2013) wrote the shift, which vanishes as r -> 0 and is
+  // bounded (experimental, fiftieth session)
+  enum class ShiftingKernel { Mps, Wendland };
+  ShiftingKernel shifting_kernel = ShiftingKernel::Mps;
   // [l0] a guard: a particle shift longer than this is shortened to it (counted: shift_cuts in diagnostics.csv);
   // 0 = none. The shift's first moment grows as 1/r^2 for a close pair (docs/two-phase.md).
   double shift_limit = 0.0;

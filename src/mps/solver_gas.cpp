@@ -302,7 +302,7 @@ void MpsSolver<D>::correctGas(double dt) {
     for (std::int64_t i = 0; i < n; ++i) {
       if (!roles_.open_gas[i] || isVentGas(static_cast<std::size_t>(i))) continue;
       shift[i] = shiftingDisplacement<D>(i, p.position, near_neighbours_, constants_, config_.numerics.particle_shifting,
-                                         p.velocity[i], dt, Vec<D>::Zero(), all);
+                                         p.velocity[i], dt, Vec<D>::Zero(), all, config_.numerics.shifting_kernel);
     }
     for (std::int64_t i = 0; i < n; ++i) p.position[i] += shift[i];
   }

@@ -181,7 +181,8 @@ void MpsSolver<D>::shiftParticles(double dt) {
     if (isVentGas(static_cast<std::size_t>(i))) continue;
     const Vec<D>& normal = surface_tangents_.normal[i];
     if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
-    shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum);
+    shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum,
+                                       config_.numerics.shifting_kernel);
   }
   // numerics.shift_limit (a guard, counted): a shift longer than limit l0 is shortened to it.
   const double limit = config_.numerics.shift_limit * constants_.l0;
