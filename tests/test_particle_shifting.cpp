@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -208,8 +209,9 @@ std::pair<StepReport, double> stepWithAPairAtTheFloor(bool wall_stop) {
 
 }  // namespace
 
-// numerics.shift_limit (a guard): shifts longer than the limit are cut and counted (here 0.29 l0 at most, with a close
-// pair in a fast flow); a limit above the longest shift cuts nothing, and the trajectory is the unlimited one.
+// numerics.shift_limit (a guard): shifts longer than the limit are cut and counted (here 0.29 l0 at most, in a fast
+// flow with a close pair: the longest is the water meeting the right wall, the test below); a limit above the longest
+// shift cuts nothing, and the trajectory is the unlimited one.
 TEST(ParticleShifting, TheShiftLimitCutsTheShiftsAboveItAndCountsThem) {
   const auto [free_report, free_move] = stepWithAClosePair(0.0);
   EXPECT_GT(free_report.largest_shift, 0.2);
@@ -220,6 +222,29 @@ TEST(ParticleShifting, TheShiftLimitCutsTheShiftsAboveItAndCountsThem) {
   const auto [loose_report, loose_move] = stepWithAClosePair(1.0);
   EXPECT_EQ(0u, loose_report.shift_cuts);
   EXPECT_DOUBLE_EQ(free_move, loose_move);
+}
+
+// The step names the particle of its largest shift (diagnostics.csv's largest_shift_id and largest_shift_time, for
+// --trace): in the fast flow one of its fluid particles, in the step that starts at t = 0 (here the water meeting the
+// right wall, 0.29 l0); water starting at rest, by under a thousandth of a spacing (0.00058 l0: its first step).
+TEST(ParticleShifting, TheStepNamesTheParticleItShiftedFurthest) {
+  for (const double speed : {5.0, 0.0}) {
+    FastWater water(0.0, false);
+    auto& p = water.state.particles;
+    for (auto& u : p.velocity) u.x() = speed;
+    std::set<std::int64_t> fluid;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == ParticleKind::Fluid) fluid.insert(static_cast<std::int64_t>(p.id[i]));
+    MpsSolver<2> solver(water.config, water.state);
+    const StepReport report = solver.step(1.0);
+    if (speed > 0.0) {
+      EXPECT_GT(report.largest_shift, 0.2);
+      EXPECT_EQ(1u, fluid.count(report.largest_shift_id)) << report.largest_shift_id;
+      EXPECT_EQ(0.0, report.largest_shift_time);
+    } else {
+      EXPECT_LT(report.largest_shift, 1e-3);
+    }
+  }
 }
 
 // numerics.shift_wall_stop (a guard, counted): a close pair above the lowest row shifts the lowest particle towards

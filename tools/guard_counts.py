@@ -98,8 +98,11 @@ def main():
         if column in rows[0]:
             values = [float(r[column]) for r in rows]
             worst = max(values)
-            at = float(rows[values.index(worst)]["time"])
-            print(f"{column}: {reduce(values):g} ({what}; the most in a row {worst:g} at {at:.2f} s)")
+            row = rows[values.index(worst)]
+            named = ""
+            if column == "largest_shift" and int(row.get("largest_shift_id", "-1")) >= 0:
+                named = f": particle id {row['largest_shift_id']}, in the step from {float(row['largest_shift_time']):.6f} s"
+            print(f"{column}: {reduce(values):g} ({what}; the most in a row {worst:g} at {float(row['time']):.2f} s{named})")
     if silent_set:
         print("guards the case sets that did not fire over these rows (the same trajectory without them): "
               + ", ".join(silent_set))

@@ -52,7 +52,11 @@ void StepCounts::add(const StepReport& step) {
   for (const CountColumn& c : kCounts) sums_.*c.row += static_cast<std::int64_t>(step.*c.step);
   sums_.gas_set_dt += step.dt_set_by_gas ? 1 : 0;
   if (step.liquid_dt > 0.0) sums_.liquid_dt_steps += step.dt / step.liquid_dt;
-  sums_.largest_shift = std::max(sums_.largest_shift, step.largest_shift);
+  if (step.largest_shift > sums_.largest_shift) {
+    sums_.largest_shift = step.largest_shift;
+    sums_.largest_shift_id = step.largest_shift_id;
+    sums_.largest_shift_time = step.largest_shift_time;
+  }
 }
 
 void StepCounts::moveInto(DiagnosticsRow& row) {
@@ -60,6 +64,8 @@ void StepCounts::moveInto(DiagnosticsRow& row) {
   row.gas_set_dt = std::exchange(sums_.gas_set_dt, 0);
   row.liquid_dt_steps = std::exchange(sums_.liquid_dt_steps, 0.0);
   row.largest_shift = std::exchange(sums_.largest_shift, 0.0);
+  row.largest_shift_id = std::exchange(sums_.largest_shift_id, -1);
+  row.largest_shift_time = std::exchange(sums_.largest_shift_time, 0.0);
 }
 
 }  // namespace mistfall

@@ -120,6 +120,8 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::curvature_unfitted>("curvature_unfitted"),
     column<&DiagnosticsRow::long_respacings>("long_respacings"),
     column<&DiagnosticsRow::respacing_fluid_stops>("respacing_fluid_stops"),
+    column<&DiagnosticsRow::largest_shift_id>("largest_shift_id"),
+    column<&DiagnosticsRow::largest_shift_time, 12>("largest_shift_time"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

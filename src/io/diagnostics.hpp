@@ -90,6 +90,10 @@ struct DiagnosticsRow {
   // Since the previous row, the re-spacings of a bubble's gas whose approach to a particle within collision_distance
   // numerics.respacing_stop took off (the water's, or every fluid particle's; mps/wall_stop.hpp; particle-steps)
   std::int64_t respacing_fluid_stops = 0;
+  // The particle of largest_shift: its id (-1: no shift in the row, or a row written before the column existed) and
+  // the start of its step [s], for `mistfall simulate --trace ID --trace-from T` from the checkpoint before it.
+  std::int64_t largest_shift_id = -1;
+  double largest_shift_time = 0;
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).
   std::int64_t collision_wall_limits = 0;

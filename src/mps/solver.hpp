@@ -98,6 +98,8 @@ struct StepReport {
   std::size_t gradient_fallbacks = 0;  // corrected gradients that fell back to the standard form (stabilised)
   std::size_t thin_support = 0;        // rows made free surface by numerics.liquid_support_fraction (stabilised)
   double largest_shift = 0.0;          // the largest particle shift of the step / l0 (particle_shifting.hpp)
+  std::int64_t largest_shift_id = -1;  // its particle's id (-1: none shifted)
+  double largest_shift_time = 0.0;     // the start of the step [s]
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
   std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it, bubble_gas_wall_stop or respacing_walls

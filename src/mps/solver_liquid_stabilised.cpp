@@ -191,19 +191,22 @@ void MpsSolver<D>::shiftParticles(double dt) {
   const bool wall_stop = config_.numerics.shift_wall_stop;
   const double stop_distance = config_.numerics.collision_distance * constants_.l0;
   auto fixed = [&](std::int32_t j) { return isFixed(p.kind[j]); };
-  double largest = 0.0;
+  std::vector<double> length(n, 0.0);
   std::size_t cuts = 0, stops = 0;
-#pragma omp parallel for schedule(static) reduction(max : largest) reduction(+ : cuts, stops)
+#pragma omp parallel for schedule(static) reduction(+ : cuts, stops)
   for (std::int64_t i = 0; i < n; ++i) {
-    const double length = shift[i].norm();
-    largest = std::max(largest, length);
-    if (limit > 0.0 && length > limit) shift[i] *= limit / length, ++cuts;
-    if (wall_stop && length > 0.0)
+    length[i] = shift[i].norm();
+    if (limit > 0.0 && length[i] > limit) shift[i] *= limit / length[i], ++cuts;
+    if (wall_stop && length[i] > 0.0)
       stops += stopDisplacementAtWalls<D>(static_cast<std::size_t>(i), p.position, neighbours_, stop_distance, fixed,
                                           shift[i]);
     p.position[i] += shift[i];
   }
-  report_.largest_shift = largest / constants_.l0;
+  // The largest shift as computed (before the limit) and its particle, the first of equals in index order.
+  const auto largest = std::max_element(length.begin(), length.end());
+  report_.largest_shift = largest == length.end() ? 0.0 : *largest / constants_.l0;
+  report_.largest_shift_id = largest == length.end() || *largest == 0.0 ? -1 : p.id[largest - length.begin()];
+  report_.largest_shift_time = state_.time;
   report_.shift_cuts = cuts;
   report_.shift_wall_stops = stops;
 }

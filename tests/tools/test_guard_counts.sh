@@ -6,7 +6,8 @@
 #   respacing_fluid_stops 5, 0, 0, 7: total 12 in 2 rows (0 and 3 s);
 #   shift_cuts 0 throughout with its key set: listed, and named as the one set guard that did not fire;
 #   gas_speed_capped 0 with its key not set: listed with --all only;
-#   largest_shift 0.1, 0.9, 0.3, 0.2: the most 0.9 at 1 s; long_respacings 0, 2, 1, 3: 6 in all.
+#   largest_shift 0.1, 0.9, 0.3, 0.2: the most 0.9 at 1 s, particle id 2867 in the step from 0.9426 s;
+#   long_respacings 0, 2, 1, 3: 6 in all.
 # Bad input exits 1 with a one-line message.
 # Usage: test_guard_counts.sh SOURCE_DIR
 set -euo pipefail
@@ -19,11 +20,11 @@ source "$source_dir/tests/tools/expect_fail.sh"
 run="$work/run"
 mkdir -p "$run"
 cat >"$run/diagnostics.csv" <<'CSV'
-time,step,escaped,gas_speed_capped,collisions,shift_cuts,respacing_cuts,respacing_fluid_stops,largest_shift,long_respacings
-0,0,0,0,10,0,0,5,0.1,0
-1,100,0,0,10,0,2,0,0.9,2
-2,200,0,0,10,0,0,0,0.3,1
-3,300,1,0,10,0,3,7,0.2,3
+time,step,escaped,gas_speed_capped,collisions,shift_cuts,respacing_cuts,respacing_fluid_stops,largest_shift,long_respacings,largest_shift_id,largest_shift_time
+0,0,0,0,10,0,0,5,0.1,0,-1,0
+1,100,0,0,10,0,2,0,0.9,2,2867,0.9426101725
+2,200,0,0,10,0,0,0,0.3,1,12,1.5
+3,300,1,0,10,0,3,7,0.2,3,7,2.5
 CSV
 cat >"$run/case.toml" <<'TOML'
 [numerics]
@@ -44,7 +45,8 @@ out=$("$py" "$tool" "$run")
 [[ $(row collisions) == "collisions 40 4 0.00 3.00 collision_distance = 0.8" ]] || fail "collisions"
 [[ -z $(row gas_speed_capped) ]] || fail "an unset silent guard listed without --all"
 grep -q "escaped 1" <<<"$out" || fail "escaped"
-grep -q "^largest_shift: 0.9 .* 0.9 at 1.00 s" <<<"$out" || fail "largest_shift"
+grep -q "^largest_shift: 0.9 .* 0.9 at 1.00 s: particle id 2867, in the step from 0.942610 s)" <<<"$out" \
+  || fail "largest_shift"
 grep -q "^long_respacings: 6 .* 3 at 3.00 s" <<<"$out" || fail "long_respacings"
 grep -q "did not fire over these rows .*: shift_limit$" <<<"$out" || fail "the silent set guards"
 
