@@ -19,35 +19,34 @@ import pathlib
 import sys
 import tomllib
 
-# (diagnostics column, the case keys under [numerics] that set or govern it, what one firing is, whether the key is a
-# guard that does nothing where it does not fire: then a run in which it is silent is the same without it). The keys
-# are those of docs/case-file.md, where each guard's row says why it exists and what it is measured against.
+# (diagnostics column, the case keys under [numerics] that set or govern it, whether the key is a guard that does
+# nothing where it does not fire: then a run in which it is silent is the same without it). The keys are those of
+# docs/case-file.md, where each guard's row says what one firing is, why it exists and what it is measured against.
 GUARDS = [
-    ("gas_correction_capped", ["gas_correction_limit"], "a gas correction cut", True),
-    ("gas_speed_capped", ["gas_speed_limit"], "a gas velocity cut", True),
-    ("dispersed_gas", ["dispersed_gas_fraction"], "a gas particle-step moved with the water", True),
-    ("entrained_swaps", ["entrained_gas_rise_speed"], "a phase-label swap", True),
-    ("regularised_rows", ["bubble_regularisation"], "a bubble row at the regularised sound speed", False),
-    ("collisions", ["collision_distance", "collision_passes"], "a pair reversal of the collision model", False),
-    ("gradient_fallbacks", ["gradient_correction_min_determinant"], "a corrected gradient fallen back", False),
-    ("thin_support", ["liquid_support_fraction"], "a row made free surface for thin liquid support", False),
-    ("neighbour_surfaces", ["surface_neighbour_fraction", "surface_asymmetry"], "a row made free surface", False),
-    ("shift_cuts", ["shift_limit"], "a shift cut", True),
-    ("shift_wall_stops", ["shift_wall_stop"], "a shift's approach to a wall taken off", True),
-    ("respacing_wall_stops", ["respacing_walls", "shift_wall_stop", "bubble_gas_wall_stop"],
-     "a re-spacing slid along or stopped at a wall", False),
-    ("respacing_cuts", ["respacing_limit"], "a re-spacing cut", True),
-    ("respacing_fluid_stops", ["respacing_stop"], "a re-spacing's approach to a fluid particle taken off", True),
-    ("bubble_gas_wall_stops", ["bubble_gas_wall_stop"], "a bubble gas move's approach to a wall taken off", True),
-    ("collision_wall_limits", ["collision_wall_limit"], "a collision velocity kept from a wall", True),
-    ("liquid_wall_collisions", ["liquid_collision_after_correction"], "a water-wall pair reversed after correction", True),
-    ("vent_liquid_stops", ["vent_liquid_stop"], "a vent column held", True),
-    ("vent_crowded_out", ["vent_crowding_at_mouth"], "a gas particle removed at a vent as crowded", False),
-    ("gap_water_floors", ["gap_water_floor"], "a water row raised to the air's pressure", True),
-    ("point_wall_stops", ["entrained_bubble_diameter"], "a bubble point stopped at a wall", False),
-    ("points_unpaired", ["entrained_bubble_diameter"], "a bubble point released unpaired", False),
-    ("points_coalesced", ["entrained_bubble_diameter"], "two bubble points made one", False),
-    ("curvature_unfitted", ["bubble_surface_tension"], "an interface particle without a curvature fit", False),
+    ("gas_correction_capped", ["gas_correction_limit"], True),
+    ("gas_speed_capped", ["gas_speed_limit"], True),
+    ("dispersed_gas", ["dispersed_gas_fraction"], True),
+    ("entrained_swaps", ["entrained_gas_rise_speed"], True),
+    ("regularised_rows", ["bubble_regularisation"], False),
+    ("collisions", ["collision_distance", "collision_passes"], False),
+    ("gradient_fallbacks", ["gradient_correction_min_determinant"], False),
+    ("thin_support", ["liquid_support_fraction"], False),
+    ("neighbour_surfaces", ["surface_neighbour_fraction", "surface_asymmetry"], False),
+    ("shift_cuts", ["shift_limit"], True),
+    ("shift_wall_stops", ["shift_wall_stop"], True),
+    ("respacing_wall_stops", ["respacing_walls", "shift_wall_stop", "bubble_gas_wall_stop"], False),
+    ("respacing_cuts", ["respacing_limit"], True),
+    ("respacing_fluid_stops", ["respacing_stop"], True),
+    ("bubble_gas_wall_stops", ["bubble_gas_wall_stop"], True),
+    ("collision_wall_limits", ["collision_wall_limit"], True),
+    ("liquid_wall_collisions", ["liquid_collision_after_correction"], True),
+    ("vent_liquid_stops", ["vent_liquid_stop"], True),
+    ("vent_crowded_out", ["vent_crowding_at_mouth"], False),
+    ("gap_water_floors", ["gap_water_floor"], True),
+    ("point_wall_stops", ["entrained_bubble_diameter"], False),
+    ("points_unpaired", ["entrained_bubble_diameter"], False),
+    ("points_coalesced", ["entrained_bubble_diameter"], False),
+    ("curvature_unfitted", ["bubble_surface_tension"], False),
 ]
 NEAR_MISSES = [("largest_shift", max, "the largest shift of a step [l0]"),
                ("long_respacings", sum, "re-spacings longer than one spacing as solved")]
@@ -82,7 +81,7 @@ def main():
           f"escaped {rows[-1]['escaped']}")
     print(f"{'guard (diagnostics.csv)':24} {'total':>10} {'rows':>5} {'first':>6} {'last':>6}  key(s) as the case sets them")
     silent_set = []
-    for column, guard_keys, _, no_op_when_silent in GUARDS:
+    for column, guard_keys, no_op_when_silent in GUARDS:
         if column not in rows[0]:
             continue
         fired = [(float(r["time"]), float(r[column])) for r in rows if float(r[column]) != 0.0]
