@@ -147,7 +147,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "surface_tension_fit_radius",
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
-                "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes"});
+                "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes",
+                "entrained_gas_inertia"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -182,6 +183,8 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.number(nm, np, "collision_restitution", {0.0, 1.0, false, false}, n.collision_restitution);
   rd.boolean(nm, np, "collision_wall_limit", n.collision_wall_limit);
   rd.integer(nm, np, "collision_passes", 1, 10, "[1, 10]", n.collision_passes);
+  if (int s = rd.choice(nm, np, "entrained_gas_inertia", {"gas", "liquid"}); s >= 0)
+    n.entrained_gas_liquid_inertia = s == 1;
   rd.boolean(nm, np, "vent_liquid_stop", n.vent_liquid_stop);
   rd.boolean(nm, np, "vent_crowding_at_mouth", n.vent_crowding_at_mouth);
   if (int s = rd.choice(nm, np, "pressure_source", {"standard", "mixed"}); s >= 0)

@@ -217,6 +217,13 @@ class MpsSolver {
     return i < vent_at_start_.size() && vent_at_start_[i] >= 0 && p.kind[i] == ParticleKind::Fluid &&
            p.phase[i] == Phase::Gas;
   }
+  // Gas of an enclosed region below a bubble's resolution: it takes part in the liquid system as liquid (two
+  // systems; on the one equation every gas particle has a row of its own, with its own density).
+  bool isEntrainedBelowResolution(std::size_t i) const {
+    const auto& p = state_.particles;
+    return !oneEquation() && i < roles_.in_liquid_system.size() && p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas &&
+           roles_.in_liquid_system[i] && !roles_.enclosed_gas[i];
+  }
   // The Dirichlet value such a particle holds (gas_vent.hpp's ventPressure: the ambient's, less the entering air's
   // dynamic pressure where its column enters), for gas of density `density`.
   double ventGasPressure(std::size_t i, double density) const {
