@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <string>
 
@@ -191,16 +190,9 @@ TEST(EntrainedGas, WaterClosingOnEntrainedGasSharesTheApproachByTheInertiaTheKey
     const auto path = test_support::freshDir(std::string("entrained_inertia_") + row.inertia) / "trace.csv";
     run.solver->traceParticle(water_id, 0.0, path.string());
     run.solver->step(1.0);
-    // The trace's rows: time, step, stage, row, id, kind, phase, enclosed, gas_system, x, y, ux, uy, ...
-    std::ifstream trace(path);
-    std::string line;
-    double predicted = std::nan(""), collided = std::nan("");
-    while (std::getline(trace, line)) {
-      const std::vector<std::string> field = test_support::csvFields(line);
-      if (field.size() <= 12 || field[3] != "self") continue;
-      if (field[2] == "predict") predicted = std::stod(field[12]);
-      if (field[2] == "collision") collided = std::stod(field[12]);
-    }
+    // column 12: uy
+    const double predicted = test_support::traceValue(path, "predict", "self", 12);
+    const double collided = test_support::traceValue(path, "collision", "self", 12);
     ASSERT_TRUE(std::isfinite(predicted) && std::isfinite(collided)) << "no rows for the water in " << path;
     EXPECT_NEAR(collided - predicted, row.water_change, 0.01);
   }

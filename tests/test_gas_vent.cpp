@@ -10,7 +10,6 @@
 #include <memory>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -384,14 +383,7 @@ TEST(GasVent, AirMeetingAVentsGasTakesTheWholeReversal) {
   const auto path = test_support::freshDir("vent_collision") / "trace.csv";
   run.solver->traceParticle(p.id[below], 0.0, path.string());
   run.solver->step(1.0);
-  // The trace's rows: time, step, stage, row, id, kind, phase, enclosed, gas_system, x, y, ux, uy, ...
-  std::ifstream trace(path);
-  std::string line;
-  double uy = std::nan("");
-  while (std::getline(trace, line)) {
-    const std::vector<std::string> field = test_support::csvFields(line);
-    if (field.size() > 12 && field[2] == "collision" && field[3] == "self") uy = std::stod(field[12]);
-  }
+  const double uy = test_support::traceValue(path, "collision", "self", 12);  // column 12: uy
   ASSERT_TRUE(std::isfinite(uy)) << "no collision row for the particle in " << path;
   EXPECT_LT(uy, 0.01);    // the vent's gas at rest but for one step of gravity: nothing left of the approach
   EXPECT_GT(uy, -0.01);   // and no restitution

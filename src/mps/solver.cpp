@@ -96,9 +96,13 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
   }
 }
 
+// Its phase's density times l0^D; with numerics.entrained_gas_inertia = "liquid" the water's for gas below a bubble's
+// resolution, which the step moves as liquid (phase_coupling.hpp), so that it meets the water with the water's inertia.
 template <int D>
 double MpsSolver<D>::particleMass(std::size_t i) const {
-  return phases_[static_cast<int>(state_.particles.phase[i])].density * std::pow(constants_.l0, D);
+  const bool moves_as_liquid = config_.numerics.entrained_gas_liquid_inertia && isEntrainedBelowResolution(i);
+  const Phase phase = moves_as_liquid ? Phase::Liquid : state_.particles.phase[i];
+  return phases_[static_cast<int>(phase)].density * std::pow(constants_.l0, D);
 }
 
 template <int D>

@@ -142,7 +142,7 @@ class MpsSolver {
   // diverged.txt: which particle shortened the step before a divergence).
   std::string recentStepsCsv() const;
   static constexpr std::size_t kRecentSteps = 200;
-  double particleMass(std::size_t i) const;
+  double particleMass(std::size_t i) const;  // the mass the collision model gives particle i (solver.cpp)
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
   const NeighbourList& currentNeighbours();
   // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).
@@ -221,8 +221,8 @@ class MpsSolver {
   // systems; on the one equation every gas particle has a row of its own, with its own density).
   bool isEntrainedBelowResolution(std::size_t i) const {
     const auto& p = state_.particles;
-    return !oneEquation() && i < roles_.in_liquid_system.size() && p.kind[i] == ParticleKind::Fluid && p.phase[i] == Phase::Gas &&
-           roles_.in_liquid_system[i] && !roles_.enclosed_gas[i];
+    return !oneEquation() && i < roles_.in_liquid_system.size() && p.kind[i] == ParticleKind::Fluid &&
+           p.phase[i] == Phase::Gas && roles_.in_liquid_system[i] && !roles_.enclosed_gas[i];
   }
   // The Dirichlet value such a particle holds (gas_vent.hpp's ventPressure: the ambient's, less the entering air's
   // dynamic pressure where its column enters), for gas of density `density`.

@@ -28,14 +28,7 @@ CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
   // wall.
   constexpr double kPrescribedMass = 1e30;
   std::vector<double> mass(p.size());
-  // numerics.entrained_gas_inertia = "liquid": the gas of an enclosed region below a bubble's resolution moves as
-  // liquid (phase_coupling.hpp), and meets the water with the water's inertia.
-  const bool liquid_inertia = config_.numerics.entrained_gas_liquid_inertia;
-  const double liquid_mass = phases_[static_cast<int>(Phase::Liquid)].density * std::pow(constants_.l0, D);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    mass[i] = isVentGas(i)                                      ? kPrescribedMass
-              : liquid_inertia && isEntrainedBelowResolution(i) ? liquid_mass
-                                                                : particleMass(i);
+  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = isVentGas(i) ? kPrescribedMass : particleMass(i);
   const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
                              config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
   return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,

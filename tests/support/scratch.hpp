@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -47,6 +48,20 @@ inline std::vector<std::string> csvFields(const std::string& line) {
   std::stringstream cells(line);
   for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
   return fields;
+}
+
+// From a particle trace (`MpsSolver::traceParticle`, mps/particle_trace.hpp; its columns: time, step, stage, row, id,
+// kind, phase, enclosed, gas_system, x, y, ux, uy, ...): the value in `column` of the last line of stage `stage` and
+// row `row` ("self" or "near"), or NaN where there is none.
+inline double traceValue(const std::filesystem::path& trace, const std::string& stage, const std::string& row,
+                         std::size_t column) {
+  std::ifstream in(trace);
+  double value = std::nan("");
+  for (std::string line; std::getline(in, line);) {
+    const std::vector<std::string> field = csvFields(line);
+    if (field.size() > column && field[2] == stage && field[3] == row) value = std::stod(field[column]);
+  }
+  return value;
 }
 
 }  // namespace mistfall::test_support
