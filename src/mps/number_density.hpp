@@ -20,6 +20,21 @@ double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const
   return n;
 }
 
+// The volume-weighted number density: n_i = sum_{j != i} w(|r_j - r_i|) V_j / l0^D over the neighbours `include(j)`
+// admits, with `volume(j)` = V_j / l0^D (n0 / n_j for a particle whose own number density is n_j; 1 at the lattice
+// spacing, where it is numberDensityAt). On a lattice compressed uniformly to a spacing s l0 it stays near n0 where
+// the particle count gives n0 / s^D (tests/test_operators.cpp).
+template <int D, class Include, class Volume>
+double volumeWeightedNumberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
+                                     double re, Include&& include, Volume&& volume) {
+  double n = 0.0;
+  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
+    const auto j = nl.indices[s];
+    if (include(j)) n += weight((position[j] - position[i]).norm(), re) * volume(j);
+  }
+  return n;
+}
+
 // How many neighbours j with include(j) lie within re (the neighbour count; a full lattice has
 // latticeNeighbourCount of enclosed_gas.hpp: 12 in 2D and 32 in 3D for re = 2.1 l0).
 template <int D, class Include>

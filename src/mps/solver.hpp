@@ -173,6 +173,7 @@ class MpsSolver {
   void findBubbles();
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();
+  void countBubbleGasByVolume();
   void solveLiquidPressure(double dt);
   void setLiquidWallPressure();
   void extrapolateDummyPressure(std::vector<double>& pressure, double density, bool clamp = true) const;
