@@ -192,9 +192,10 @@ struct NumericsConfig {
   // water approaching it kept its approach (docs/waterfall.md, fifty-first session: a soft bubble squeezed to 1.7 n0
   // became such gas with water 0.5 l0 from it closing at 4.4 m/s)
   bool entrained_gas_liquid_inertia = true;
-  // numerics.bubble_gas_in_water_density (experimental): how the rows outside the bubbles count a bubble's gas in
-  // their n*: "particle" (default) each gas particle as one; "volume" by the volume it stands for, n0 / n_j
-  // (solver_liquid.cpp, countBubbleGasByVolume), so a squeezed bubble's crowded gas does not raise the water's n*
+  // numerics.bubble_gas_in_water_density: how the rows outside the bubbles count a bubble's gas in their n*:
+  // "particle" (default, the paper's n*) each gas particle as one; "volume" (both waterfall cases since the fifty-second
+  // session) by the volume it stands for, n0 / n_j (solver_liquid.cpp, countBubbleGasByVolume), so a squeezed
+  // bubble's crowded gas does not raise the water's n*
   bool bubble_gas_counts_by_volume = false;
   PressureSource pressure_source = PressureSource::Standard;
   double source_relaxation = 0.01;      // gamma of the mixed source term (ignored by "standard")
