@@ -8,18 +8,6 @@
 
 namespace mistfall {
 
-// Number density counting only the neighbours `include(j)` admits (one phase's view in the two-phase model).
-template <int D, class Include>
-double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
-                       Include&& include) {
-  double n = 0.0;
-  for (auto s = nl.begin(i); s < nl.end(i); ++s) {
-    const auto j = nl.indices[s];
-    if (include(j)) n += weight((position[j] - position[i]).norm(), re);
-  }
-  return n;
-}
-
 // The volume-weighted number density: n_i = sum_{j != i} w(|r_j - r_i|) V_j / l0^D over the neighbours `include(j)`
 // admits, with `volume(j)` = V_j / l0^D (n0 / n_j for a particle whose own number density is n_j; 1 at the lattice
 // spacing, where it is numberDensityAt). On a lattice compressed uniformly to a spacing s l0 it stays near n0 where
@@ -33,6 +21,14 @@ double volumeWeightedNumberDensityAt(std::size_t i, const std::vector<Vec<D>>& p
     if (include(j)) n += weight((position[j] - position[i]).norm(), re) * volume(j);
   }
   return n;
+}
+
+// Number density counting only the neighbours `include(j)` admits (one phase's view in the two-phase model): the
+// volume-weighted one with every neighbour at the lattice spacing.
+template <int D, class Include>
+double numberDensityAt(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl, double re,
+                       Include&& include) {
+  return volumeWeightedNumberDensityAt<D>(i, position, nl, re, include, [](std::int32_t) { return 1.0; });
 }
 
 // How many neighbours j with include(j) lie within re (the neighbour count; a full lattice has

@@ -27,10 +27,15 @@ void MpsSolver<D>::computeLiquidNumberDensity() {
   const auto& in_system = roles_.in_liquid_system;
   auto counts = [&](std::int32_t j) { return in_system[j] != 0; };
   const double re = constants_.re_number_density;
+  // by volume, the bubbles' gas rows first: the other rows read their n* (countBubbleGasByVolume)
+  const bool by_volume = config_.numerics.bubble_gas_counts_by_volume;
+  const auto& bubble_gas = roles_.enclosed_gas;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)
-    p.number_density[i] = in_system[i] ? numberDensityAt<D>(i, p.position, near_neighbours_, re, counts) : 0.0;
-  if (config_.numerics.bubble_gas_counts_by_volume) countBubbleGasByVolume();
+    p.number_density[i] = in_system[i] && (!by_volume || bubble_gas[i])
+                              ? numberDensityAt<D>(i, p.position, near_neighbours_, re, counts)
+                              : 0.0;
+  if (by_volume) countBubbleGasByVolume();
 }
 
 // numerics.bubble_gas_in_water_density = "volume": the rows outside the bubbles count each bubble gas particle j by
@@ -38,14 +43,15 @@ void MpsSolver<D>::computeLiquidNumberDensity() {
 // sum_j w_ij V_j / l0^D does, instead of as one particle. A bubble squeezed below its spacing packs more particles
 // round the water beside it than the water's share of the space holds; counted whole, they raised the water's n*
 // to 1.35-4.2 n0 and its pressure to 37-179 kPa above the bubble's (docs/waterfall.md, fifty-first session). The
-// bubbles' own rows (their merged unknown's volume, eq. (17)) keep the particle count.
+// bubbles' own rows (their merged unknown's volume, eq. (17)) keep the particle count: computed before, they are read
+// here and not written, so the loop reads them in place.
 template <int D>
 void MpsSolver<D>::countBubbleGasByVolume() {
   auto& p = state_.particles;
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   const auto& in_system = roles_.in_liquid_system;
   const auto& bubble_gas = roles_.enclosed_gas;
-  const std::vector<double> own = p.number_density;
+  const std::vector<double>& own = p.number_density;
   const double n0 = constants_.n0;
   auto counts = [&](std::int32_t j) { return in_system[j] != 0; };
   auto volume = [&](std::int32_t j) { return bubble_gas[j] && own[j] > 0.0 ? n0 / own[j] : 1.0; };
