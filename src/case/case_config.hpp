@@ -192,6 +192,12 @@ struct NumericsConfig {
   // water approaching it kept its approach (docs/waterfall.md, fifty-first session: a soft bubble squeezed to 1.7 n0
   // became such gas with water 0.5 l0 from it closing at 4.4 m/s)
   bool entrained_gas_liquid_inertia = true;
+  // numerics.bubble_gas_inertia: the mass the collision model after the prediction gives a resolved bubble's gas
+  // while it follows the liquid (bubble_gas_motion.hpp: its velocity is the water's extended into the bubble, it
+  // carries no momentum of its own): "gas" (default) its own, so water closing on it keeps its approach; "liquid" the
+  // water's, so the pair shares the approach as two water particles do (solver_collisions.cpp; docs/waterfall.md,
+  // fifty-third session). The collision after the gas correction, which moves the gas alone, is the same either way.
+  bool bubble_gas_liquid_inertia = false;
   // numerics.bubble_gas_in_water_density: how the rows outside the bubbles count a bubble's gas in their n*:
   // "particle" (default, the paper's n*) each gas particle as one; "volume" (both waterfall cases since the fifty-second
   // session) by the volume it stands for, n0 / n_j (solver_liquid.cpp, countBubbleGasByVolume), so a squeezed

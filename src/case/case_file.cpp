@@ -148,7 +148,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
                 "bubble_gas_motion", "bubble_regularisation", "coupling", "gas_operators", "vent_outlet",
                 "gap_water_floor", "gas_collision_after_correction", "liquid_collision_after_correction",
                 "collision_wall_limit", "vent_liquid_stop", "vent_crowding_at_mouth", "collision_passes",
-                "entrained_gas_inertia", "bubble_gas_in_water_density"});
+                "entrained_gas_inertia", "bubble_gas_inertia", "bubble_gas_in_water_density"});
   NumericsConfig& n = c.numerics;
   rd.number(nm, np, "particle_spacing", {0.0, 10.0, true, false}, n.particle_spacing, true);
   if (int s = rd.choice(nm, np, "scheme", {"paper", "stabilised"}); s >= 0)
@@ -185,6 +185,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   rd.integer(nm, np, "collision_passes", 1, 10, "[1, 10]", n.collision_passes);
   if (int s = rd.choice(nm, np, "entrained_gas_inertia", {"gas", "liquid"}); s >= 0)
     n.entrained_gas_liquid_inertia = s == 1;
+  if (int s = rd.choice(nm, np, "bubble_gas_inertia", {"gas", "liquid"}); s >= 0) n.bubble_gas_liquid_inertia = s == 1;
   if (int s = rd.choice(nm, np, "bubble_gas_in_water_density", {"particle", "volume"}); s >= 0)
     n.bubble_gas_counts_by_volume = s == 1;
   rd.boolean(nm, np, "vent_liquid_stop", n.vent_liquid_stop);

@@ -169,7 +169,7 @@ class MpsSolver {
   void collideCorrectedGas(double dt);
   void collideCorrectedLiquid(double dt);
   template <class Affects>
-  CollisionCount collideWhere(double dt, Affects&& affects);
+  CollisionCount collideWhere(double dt, Affects&& affects, bool bubble_gas_as_liquid = false);
   void findBubbles();
   GasRegionOptions gasRegionOptions(const std::vector<char>* was_enclosed) const;
   void computeLiquidNumberDensity();

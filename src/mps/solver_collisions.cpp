@@ -9,26 +9,33 @@ template <int D>
 void MpsSolver<D>::collide(double dt) {
   if (config_.numerics.collision_distance <= 0.0) return;
   const auto& p = state_.particles;
-  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether.
+  // Momentum is shared by mass, so the liquid hardly feels the gas; it ignores open gas altogether. With
+  // numerics.bubble_gas_inertia = "liquid" a bubble's gas that follows the liquid meets it with the water's inertia.
   const auto& open_gas = roles_.open_gas;
   const CollisionCount count = collideWhere(
-      dt, [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); });
+      dt, [&](std::int64_t i, std::int32_t j) { return !(open_gas[j] && p.phase[i] == Phase::Liquid); },
+      config_.numerics.bubble_gas_liquid_inertia && bubbleGasFollowsLiquid());
   report_.collisions = count.reversals;
   report_.collision_wall_limits = count.wall_limits;
 }
 
 // The collision model (collision.hpp) with numerics.collision_distance and collision_restitution, over the pairs
 // (i, j) where j may change i's velocity, with numerics.collision_wall_limit; the reversals and wall limits it made.
+// `bubble_gas_as_liquid`: a bubble's gas takes the water's mass (numerics.bubble_gas_inertia = "liquid").
 template <int D>
 template <class Affects>
-CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects) {
+CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects, bool bubble_gas_as_liquid) {
   auto& p = state_.particles;
   // A vent's gas moves as its column prescribes (gas_vent.hpp: the vent sets its place across the vent and its
   // velocity at the step's end), so it takes no share of a reversal: the particle meeting it takes it all, as at a
   // wall.
   constexpr double kPrescribedMass = 1e30;
   std::vector<double> mass(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) mass[i] = isVentGas(i) ? kPrescribedMass : particleMass(i);
+  const double liquid_mass = phases_[static_cast<int>(Phase::Liquid)].density * std::pow(constants_.l0, D);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    mass[i] = isVentGas(i)                                      ? kPrescribedMass
+              : bubble_gas_as_liquid && roles_.enclosed_gas[i] ? liquid_mass
+                                                                : particleMass(i);
   const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
                              config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
   return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,
