@@ -97,10 +97,12 @@ MpsSolver<D>::MpsSolver(const CaseConfig& config, SimulationState<D>& state)
 }
 
 // Its phase's density times l0^D; with numerics.entrained_gas_inertia = "liquid" the water's for gas below a bubble's
-// resolution, which the step moves as liquid (phase_coupling.hpp), so that it meets the water with the water's inertia.
+// resolution, which the step moves as liquid (phase_coupling.hpp), so that it meets the water with the water's inertia;
+// with `bubble_gas_as_liquid` (numerics.bubble_gas_inertia = "liquid") the water's for a bubble's gas too.
 template <int D>
-double MpsSolver<D>::particleMass(std::size_t i) const {
-  const bool moves_as_liquid = config_.numerics.entrained_gas_liquid_inertia && isEntrainedBelowResolution(i);
+double MpsSolver<D>::particleMass(std::size_t i, bool bubble_gas_as_liquid) const {
+  const bool moves_as_liquid = (config_.numerics.entrained_gas_liquid_inertia && isEntrainedBelowResolution(i)) ||
+                               (bubble_gas_as_liquid && roles_.enclosed_gas[i]);
   const Phase phase = moves_as_liquid ? Phase::Liquid : state_.particles.phase[i];
   return phases_[static_cast<int>(phase)].density * std::pow(constants_.l0, D);
 }

@@ -142,7 +142,7 @@ class MpsSolver {
   // diverged.txt: which particle shortened the step before a divergence).
   std::string recentStepsCsv() const;
   static constexpr std::size_t kRecentSteps = 200;
-  double particleMass(std::size_t i) const;  // the mass the collision model gives particle i (solver.cpp)
+  double particleMass(std::size_t i, bool bubble_gas_as_liquid = false) const;  // the collision model's (solver.cpp)
   // The neighbour list rebuilt at the current particle positions (for operators run between steps).
   const NeighbourList& currentNeighbours();
   // Gas regions and enclosed bubbles of the current particle positions (rebuilds the neighbour list).

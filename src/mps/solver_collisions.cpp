@@ -31,11 +31,8 @@ CollisionCount MpsSolver<D>::collideWhere(double dt, Affects&& affects, bool bub
   // wall.
   constexpr double kPrescribedMass = 1e30;
   std::vector<double> mass(p.size());
-  const double liquid_mass = phases_[static_cast<int>(Phase::Liquid)].density * std::pow(constants_.l0, D);
   for (std::size_t i = 0; i < p.size(); ++i)
-    mass[i] = isVentGas(i)                                      ? kPrescribedMass
-              : bubble_gas_as_liquid && roles_.enclosed_gas[i] ? liquid_mass
-                                                                : particleMass(i);
+    mass[i] = isVentGas(i) ? kPrescribedMass : particleMass(i, bubble_gas_as_liquid);
   const CollisionModel model{config_.numerics.collision_distance * constants_.l0,
                              config_.numerics.collision_restitution, config_.numerics.collision_wall_limit};
   return resolveCollisionPasses<D>(config_.numerics.collision_passes, p.position, p.velocity, p.kind, mass,
