@@ -167,7 +167,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
       "vented_in,vented_out,shift_cuts,bubble_points,points_made,points_released,point_wall_stops,points_unpaired,"
       "gap_water_floors,vent_crowded_out,shift_wall_stops,respacing_wall_stops,respacing_cuts,"
       "collision_wall_limits,vent_liquid_stops,neighbour_surfaces,liquid_wall_collisions,points_coalesced,bubble_gas_wall_stops,"
-      "curvature_unfitted,long_respacings,respacing_fluid_stops,largest_shift_id,largest_shift_time",
+      "curvature_unfitted,long_respacings,respacing_fluid_stops,largest_shift_id,largest_shift_time,shift_bounded",
       DiagnosticsWriter::header());
   const fs::path dir = freshDir("diag_rt");
   DiagnosticsRow r;
@@ -190,6 +190,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   r.respacing_cuts = 33; r.collision_wall_limits = 34; r.vent_liquid_stops = 35; r.neighbour_surfaces = 36;
   r.liquid_wall_collisions = 37; r.points_coalesced = 38; r.bubble_gas_wall_stops = 39; r.curvature_unfitted = 40;
   r.long_respacings = 41; r.respacing_fluid_stops = 42; r.largest_shift_id = 43; r.largest_shift_time = 1.7426101725;
+  r.shift_bounded = 44;
   {
     DiagnosticsWriter w(dir / "diagnostics.csv");
     w.append(r);
@@ -253,6 +254,7 @@ TEST(Diagnostics, HeaderAndRoundTrip) {
   EXPECT_EQ(42, rows[0].respacing_fluid_stops);
   EXPECT_EQ(43, rows[0].largest_shift_id);
   EXPECT_EQ(1.7426101725, rows[0].largest_shift_time);
+  EXPECT_EQ(44, rows[0].shift_bounded);
   EXPECT_TRUE(noTmpFiles(dir));
 }
 

@@ -134,7 +134,7 @@ namespace {
 struct FastWater {
   CaseConfig config;
   SimulationState<2> state;
-  FastWater(double shift_limit, bool wall_stop) {
+  FastWater(double shift_limit, bool wall_stop, double shift_stability = 0.0) {
     const std::string text = R"(
 [case]
 name = "close_pair"
@@ -150,6 +150,7 @@ source_relaxation = 0.01
 dt_max = 5e-4
 shift_limit = )" + std::to_string(shift_limit) + R"(
 shift_wall_stop = )" + (wall_stop ? "true" : "false") + R"(
+shift_stability = )" + std::to_string(shift_stability) + R"(
 [output]
 end_time = 1.0
 [[region]]
@@ -177,8 +178,8 @@ max = [0.24, 0.0]
 
 // One particle put 0.5 l0 from its neighbour: a close pair in a fast flow. Returns the step's report and how far that
 // particle moved.
-std::pair<StepReport, double> stepWithAClosePair(double shift_limit) {
-  FastWater water(shift_limit, false);
+std::pair<StepReport, double> stepWithAClosePair(double shift_limit, double shift_stability = 0.0) {
+  FastWater water(shift_limit, false, shift_stability);
   auto& p = water.state.particles;
   const std::size_t anchor = water.at(Vec<2>(0.105, 0.045)), moved = water.at(Vec<2>(0.115, 0.045));
   p.position[moved] = p.position[anchor] + Vec<2>(0.005, 0.0);
@@ -260,4 +261,19 @@ TEST(ParticleShifting, TheWallStopKeepsAShiftFromCarryingWaterOntoTheFloor) {
   EXPECT_LT(free_nearest, 0.5 * 0.01);
   EXPECT_GT(stop_report.shift_wall_stops, 0u);
   EXPECT_GE(stop_nearest, 0.5 * 0.01 - 1e-12);
+}
+
+// numerics.shift_stability (shift_stability.hpp): in the fast flow with a close pair (the particle 0.5 l0 from its
+// neighbour, 5 m/s, dt 0.5 ms: A |u| dt / l0 = 0.75, four times the bound on a full lattice at beta = 1) the bound
+// cuts shifts, counts them, and shortens the longest; a beta above every particle's K S cuts nothing and leaves the
+// trajectory as without it.
+TEST(ParticleShifting, TheStabilityBoundShortensTheShiftsAboveItAndCountsThem) {
+  const auto [free_report, free_move] = stepWithAClosePair(0.0);
+  EXPECT_EQ(0u, free_report.shift_bounded);
+  const auto [bounded_report, bounded_move] = stepWithAClosePair(0.0, 1.0);
+  EXPECT_GT(bounded_report.shift_bounded, 0u);
+  EXPECT_LT(bounded_report.largest_shift, 0.5 * free_report.largest_shift);
+  const auto [loose_report, loose_move] = stepWithAClosePair(0.0, 10.0);
+  EXPECT_EQ(0u, loose_report.shift_bounded);
+  EXPECT_DOUBLE_EQ(free_move, loose_move);
 }

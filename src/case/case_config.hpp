@@ -143,6 +143,11 @@ struct NumericsConfig {
   // [l0] a guard: a particle shift longer than this is shortened to it (counted: shift_cuts in diagnostics.csv);
   // 0 = none. The shift's first moment grows as 1/r^2 for a close pair (docs/two-phase.md).
   double shift_limit = 0.0;
+  // beta of the shift's stability bound (shift_stability.hpp): a particle's shift coefficient K is cut to
+  // beta / S_i, S_i the sum of the norms of its pair terms' Jacobians, so that the explicit shift does not overshoot
+  // between close neighbours (counted: shift_bounded in diagnostics.csv); 1 = the stability limit of a particle
+  // between two neighbours on a line; 0 = none
+  double shift_stability = 0.0;
   // a guard: a position-only displacement (the liquid's shift, the gas system's re-spacing of a bubble's gas) does not
   // approach a wall or dummy particle it would bring within collision_distance (wall_stop.hpp; counted:
   // shift_wall_stops and respacing_wall_stops in diagnostics.csv)

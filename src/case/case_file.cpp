@@ -138,7 +138,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   const toml::table& nm = rd.table(root, "", np);
   rd.checkKeys(nm, np,
                {"particle_spacing", "scheme", "liquid_support_fraction", "thin_row_pressure", "gradient_correction_min_determinant",
-                "pressure_repulsion", "particle_shifting", "shifting_kernel", "shift_limit", "shift_wall_stop", "bubble_gas_wall_stop", "respacing_limit", "respacing_walls", "respacing_stop", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
+                "pressure_repulsion", "particle_shifting", "shifting_kernel", "shift_limit", "shift_stability", "shift_wall_stop", "bubble_gas_wall_stop", "respacing_limit", "respacing_walls", "respacing_stop", "radius_number_density", "radius_laplacian", "courant", "dt_max", "dt_min",
                 "surface_threshold", "surface_neighbour_fraction", "surface_asymmetry", "collision_distance", "collision_restitution", "pressure_source", "source_relaxation", "source_relaxation_basis", "pressure_solver",
                 "solver_tolerance", "solver_max_iterations", "max_escaped_fraction", "bubble_min_particles", "closed_pockets",
                 "gas_domain", "entrained_gas_rise_speed", "entrained_bubble_diameter", "gas_correction_limit", "gas_region_link",
@@ -165,6 +165,7 @@ CaseConfig parseCase(std::string_view toml_text, const std::string& source_name)
   if (int s = rd.choice(nm, np, "shifting_kernel", {"mps", "wendland"}); s >= 0)
     n.shifting_kernel = static_cast<NumericsConfig::ShiftingKernel>(s);
   rd.number(nm, np, "shift_limit", {0.0, 10.0, false, false}, n.shift_limit);
+  rd.number(nm, np, "shift_stability", {0.0, 10.0, false, false}, n.shift_stability);
   rd.boolean(nm, np, "shift_wall_stop", n.shift_wall_stop);
   rd.boolean(nm, np, "bubble_gas_wall_stop", n.bubble_gas_wall_stop);
   rd.number(nm, np, "respacing_limit", {0.0, 10.0, false, false}, n.respacing_limit);

@@ -29,6 +29,7 @@ constexpr CountColumn kCounts[] = {
     {&DiagnosticsRow::entrained_gas, &StepReport::entrained_gas},
     {&DiagnosticsRow::regularised_rows, &StepReport::regularised_rows},
     {&DiagnosticsRow::shift_cuts, &StepReport::shift_cuts},
+    {&DiagnosticsRow::shift_bounded, &StepReport::shift_bounded},
     {&DiagnosticsRow::shift_wall_stops, &StepReport::shift_wall_stops},
     {&DiagnosticsRow::respacing_wall_stops, &StepReport::respacing_wall_stops},
     {&DiagnosticsRow::respacing_cuts, &StepReport::respacing_cuts},

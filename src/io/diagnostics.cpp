@@ -122,6 +122,7 @@ const Column kColumns[] = {
     column<&DiagnosticsRow::respacing_fluid_stops>("respacing_fluid_stops"),
     column<&DiagnosticsRow::largest_shift_id>("largest_shift_id"),
     column<&DiagnosticsRow::largest_shift_time, 12>("largest_shift_time"),
+    column<&DiagnosticsRow::shift_bounded>("shift_bounded"),
 };
 
 std::vector<std::string_view> splitCsv(std::string_view line) {

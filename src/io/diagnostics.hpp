@@ -94,6 +94,9 @@ struct DiagnosticsRow {
   // the start of its step [s], for `mistfall simulate --trace ID --trace-from T` from the checkpoint before it.
   std::int64_t largest_shift_id = -1;
   double largest_shift_time = 0;
+  // Particle shifts whose coefficient numerics.shift_stability cut to its explicit step's stability bound since the
+  // previous row (particle-steps; mps/shift_stability.hpp), the liquid's and the open gas's.
+  std::int64_t shift_bounded = 0;
   // Velocities the collision model kept from approaching a wall by numerics.collision_wall_limit since the previous
   // row (particle-steps; a guard, mps/collision.hpp).
   std::int64_t collision_wall_limits = 0;

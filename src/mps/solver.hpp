@@ -101,6 +101,7 @@ struct StepReport {
   std::int64_t largest_shift_id = -1;  // its particle's id (-1: none shifted)
   double largest_shift_time = 0.0;     // the start of the step [s]
   std::size_t shift_cuts = 0;          // shifts shortened to numerics.shift_limit
+  std::size_t shift_bounded = 0;       // shifts cut to numerics.shift_stability's bound (shift_stability.hpp)
   std::size_t shift_wall_stops = 0;     // shifts stopped at a wall by numerics.shift_wall_stop (wall_stop.hpp)
   std::size_t respacing_wall_stops = 0; // a bubble gas's re-spacings stopped at a wall by it, bubble_gas_wall_stop or respacing_walls
   std::size_t bubble_gas_wall_stops = 0; // a bubble gas's moves with the water stopped at a wall (bubble_gas_wall_stop)

@@ -13,6 +13,7 @@
 #include "mps/number_density.hpp"
 #include "mps/pair_loop.hpp"
 #include "mps/particle_shifting.hpp"
+#include "mps/shift_stability.hpp"
 #include "mps/wall_mirror.hpp"
 #include "mps/wall_slip.hpp"
 #include "mps/wall_stop.hpp"
@@ -298,12 +299,20 @@ void MpsSolver<D>::correctGas(double dt) {
   if (config_.numerics.gas_stabilised && config_.numerics.particle_shifting > 0.0) {
     std::vector<Vec<D>> shift(n, Vec<D>::Zero());
     auto all = [&](std::int32_t j) { return isActive(p.kind[j]); };
-#pragma omp parallel for schedule(static)
+    const double a = config_.numerics.particle_shifting;
+    const auto kernel = config_.numerics.shifting_kernel;
+    std::size_t bounded = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bounded)
     for (std::int64_t i = 0; i < n; ++i) {
       if (!roles_.open_gas[i] || isVentGas(static_cast<std::size_t>(i))) continue;
-      shift[i] = shiftingDisplacement<D>(i, p.position, near_neighbours_, constants_, config_.numerics.particle_shifting,
-                                         p.velocity[i], dt, Vec<D>::Zero(), all, config_.numerics.shifting_kernel);
+      shift[i] = shiftingDisplacement<D>(i, p.position, near_neighbours_, constants_, a, p.velocity[i], dt,
+                                         Vec<D>::Zero(), all, kernel);
+      const double factor = shiftStabilityFactor<D>(i, p.position, near_neighbours_, constants_, a,
+                                                    p.velocity[i].norm(), dt, config_.numerics.shift_stability, all,
+                                                    kernel);
+      if (factor < 1.0) shift[i] *= factor, ++bounded;
     }
+    report_.shift_bounded += bounded;
     for (std::int64_t i = 0; i < n; ++i) p.position[i] += shift[i];
   }
 }

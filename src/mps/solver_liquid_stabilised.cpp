@@ -13,6 +13,7 @@
 #include "mps/laplacian_consistency.hpp"
 #include "mps/number_density.hpp"
 #include "mps/particle_shifting.hpp"
+#include "mps/shift_stability.hpp"
 #include "mps/solver.hpp"
 #include "mps/surface_pressure.hpp"
 #include "mps/wall_mirror.hpp"
@@ -174,7 +175,10 @@ void MpsSolver<D>::shiftParticles(double dt) {
                : (roles_.in_liquid_system[j] != 0 || roles_.open_gas[j] != 0);
   };
   std::vector<Vec<D>> shift(n, Vec<D>::Zero());
-#pragma omp parallel for schedule(static)
+  const auto kernel = config_.numerics.shifting_kernel;
+  const double beta = config_.numerics.shift_stability;
+  std::size_t bounded = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bounded)
   for (std::int64_t i = 0; i < n; ++i) {
     if (p.kind[i] != ParticleKind::Fluid) continue;
     if (!one && (!roles_.in_liquid_system[i] || roles_.enclosed_gas[i])) continue;
@@ -182,8 +186,13 @@ void MpsSolver<D>::shiftParticles(double dt) {
     const Vec<D>& normal = surface_tangents_.normal[i];
     if (surface_tangents_.near[i] && normal.squaredNorm() == 0.0) continue;
     shift[i] = shiftingDisplacement<D>(i, p.position, neighbours_, constants_, a, p.velocity[i], dt, normal, inSum,
-                                       config_.numerics.shifting_kernel);
+                                       kernel);
+    // numerics.shift_stability: the explicit shift's stability bound (shift_stability.hpp; counted)
+    const double factor = shiftStabilityFactor<D>(i, p.position, neighbours_, constants_, a, p.velocity[i].norm(), dt,
+                                                  beta, inSum, kernel);
+    if (factor < 1.0) shift[i] *= factor, ++bounded;
   }
+  report_.shift_bounded = bounded;
   // numerics.shift_limit (a guard, counted): a shift longer than limit l0 is shortened to it.
   const double limit = config_.numerics.shift_limit * constants_.l0;
   // numerics.shift_wall_stop (a guard, counted): the shift does not approach a wall particle it would bring within
