@@ -33,6 +33,7 @@ GUARDS = [
     ("thin_support", ["liquid_support_fraction"], False),
     ("neighbour_surfaces", ["surface_neighbour_fraction", "surface_asymmetry"], False),
     ("shift_cuts", ["shift_limit"], True),
+    ("shift_bounded", ["shift_stability"], True),
     ("shift_wall_stops", ["shift_wall_stop"], True),
     ("respacing_wall_stops", ["respacing_walls", "shift_wall_stop", "bubble_gas_wall_stop"], False),
     ("respacing_cuts", ["respacing_limit"], True),

@@ -11,6 +11,8 @@
 // with no pressure gradient (a jet in free fall, a droplet) no shift: there is no normal to keep.
 // Why: the projection of the stabilised scheme keeps the velocity divergence-free but nothing in it keeps the
 // particles evenly spaced; without a shift, moving water relies on the collision guard (docs/validation.md).
+// The shift is one explicit step of a diffusion: numerics.shift_stability bounds each particle's coefficient by that
+// step's stability (shift_stability.hpp).
 // numerics.shifting_kernel = "wendland" (experimental) takes the concentration's gradient as Lind et al. and Skillen
 // et al. wrote it, from a smooth kernel: delta r_i = -A h |u_i| dt P_i sum_j l0^D grad_i W(|r_ij|, h), Wendland's C2
 // kernel W = alpha (1 - q/2)^4 (2q + 1), q = r / h, its support 2h = re, alpha = 7 / (4 pi h^2) in 2D and

@@ -12,8 +12,8 @@
 // from overshooting. For the MPS weight w = re/r - 1, f = w/r and |f'(r)| = (2 re - r)/r^3 > f/r. On the still,
 // evenly spaced water the bound is beta / (K S) with S = 17.8 / l0^2: at beta = 1 it caps A |u| dt / l0 at 0.18,
 // which the shipped A = 3 reaches at a Courant number of 0.06. Why: on the 5 mm waterfall (runs/wf5_nl54b) a water
-// particle at 2.6 m/s between two neighbours at 0.8 l0 (K S = 1.55) was shifted back and forth, 0.04, 0.08, 0.14,
-// 0.20, 0.35, 0.70 and 2.07 l0 in seven steps (docs/waterfall.md).
+// particle at 2.6 m/s between two neighbours at 0.8 l0 (K S = 1.55 from those two alone) was shifted back and forth,
+// 0.04, 0.08, 0.14, 0.20, 0.35, 0.70 and 2.07 l0 in seven steps (docs/waterfall.md).
 #pragma once
 
 #include <algorithm>
