@@ -1,8 +1,9 @@
 // The stability bound of the explicit particle shift (numerics.shift_stability = beta; particle_shifting.hpp):
 // the shift delta r_i = -K sum_j g(r_ij), with K = A l0 |u_i| dt D0/n0 and g(r) = r w(r) / |r|^2 ("mps"), or
 // K = A h |u_i| dt l0^D and g(r) = grad W(|r|) ("wendland"), is one explicit step of a diffusion of the particles'
-// concentration (Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231, 1499, chose their coefficient from the
-// stability of that explicit diffusion). Its Jacobian in a neighbour's position is K dg/dr, whose norm for
+// concentration (Fick's law, Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231, 1499), and a forward-Euler
+// diffusion step is stable only below a limit on its coefficient over the spacing squared (von Neumann's Fourier
+// number). Here the limit is taken per particle. Its Jacobian in a neighbour's position is K dg/dr, whose norm for
 // g = r f(|r|)/|r| is max(|f'(r)|, f(r)/r). One step is stable where the eigenvalues of K J lie in (-2, 0]; for a
 // particle between two neighbours on a line at distance d (the mode that alternates) that is
 //   K sum_j |f'(r_ij)| < 1,
