@@ -30,7 +30,7 @@ std::string bubbleKeysOf(const std::string& case_text) {
       "scheme",          "collision_distance",      "source_relaxation_basis",
       "gas_pressure_memory", "bubble_gas_motion",   "bubble_divergence",       "bubble_initial_pressure",
       "shift_limit",     "respacing_limit",         "respacing_walls",         "surface_neighbour_fraction", "surface_asymmetry",
-      "respacing_stop", "gas_collision_after_correction", "bubble_gas_in_water_density", "bubble_gas_inertia"};
+      "respacing_stop", "shift_stability", "gas_collision_after_correction", "bubble_gas_in_water_density", "bubble_gas_inertia"};
   std::istringstream in(case_text);
   std::string line, table, out;
   while (std::getline(in, line)) {
