@@ -22,11 +22,11 @@ namespace {
 auto all = [](std::int32_t) { return true; };
 constexpr double kCoefficient = 3.0, kDt = 1e-3;
 
-// K per unit speed of the shift with the given kernel (particle_shifting.hpp).
+// K per unit speed of the shift with the given kernel (particle_shifting.hpp: A l0 dt D0/n0, or A h dt with l0^D
+// inside the Wendland sum).
 double coefficientPerSpeed(const MpsConstants& c, NumericsConfig::ShiftingKernel kernel) {
-  return kernel == NumericsConfig::ShiftingKernel::Wendland
-             ? kCoefficient * 0.5 * c.re_number_density * kDt * c.l0 * c.l0
-             : kCoefficient * c.l0 * kDt * 2.0 / c.n0;
+  return kernel == NumericsConfig::ShiftingKernel::Wendland ? kCoefficient * 0.5 * c.re_number_density * kDt
+                                                            : kCoefficient * c.l0 * kDt * 2.0 / c.n0;
 }
 
 // Particle 0 between neighbours at -d and +d on the x axis, starting `offset` right of the middle, shifted `steps`

@@ -33,13 +33,30 @@
 
 namespace mistfall {
 
+// Wendland's C2 kernel of support re: h = re / 2 and its normalisation alpha.
+template <int D>
+struct WendlandC2 {
+  double h, alpha;
+  explicit WendlandC2(double re)
+      : h(0.5 * re),
+        alpha(D == 2 ? 7.0 / (4.0 * std::numbers::pi * h * h) : 21.0 / (16.0 * std::numbers::pi * h * h * h)) {}
+};
+
+// K of the shift delta r_i = -K P_i sum_j g(r_ij) for a particle moving at `speed`: A l0 |u| dt D0/n0 with the MPS
+// weight's first moment, A h |u| dt with the Wendland kernel's gradient (its l0^D inside the sum).
+template <int D>
+double shiftCoefficient(const MpsConstants& c, double coefficient, double speed, double dt,
+                        NumericsConfig::ShiftingKernel kernel) {
+  if (kernel == NumericsConfig::ShiftingKernel::Wendland) return coefficient * 0.5 * c.re_number_density * speed * dt;
+  return coefficient * c.l0 * speed * dt * double(D) / c.n0;
+}
+
 // sum_j l0^D grad_i W(|r_ij|, h) of the Wendland C2 kernel of support re (h = re / 2) over the neighbours within re
 // that `include(j)` admits: it points towards where they crowd, as the first moment below does.
 template <int D, class Include>
 Vec<D> wendlandConcentrationGradient(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                                      const MpsConstants& c, Include&& include) {
-  const double h = 0.5 * c.re_number_density;
-  const double alpha = D == 2 ? 7.0 / (4.0 * std::numbers::pi * h * h) : 21.0 / (16.0 * std::numbers::pi * h * h * h);
+  const auto [h, alpha] = WendlandC2<D>(c.re_number_density);
   const double volume = std::pow(c.l0, D);
   Vec<D> gradient = Vec<D>::Zero();
   forEachPairWithin<D>(i, position, nl, c.re_number_density, include,
@@ -70,14 +87,15 @@ Vec<D> shiftingDisplacement(std::size_t i, const std::vector<Vec<D>>& position, 
                             const MpsConstants& c, double coefficient, const Vec<D>& velocity, double dt,
                             const Vec<D>& normal, Include&& include,
                             NumericsConfig::ShiftingKernel kernel = NumericsConfig::ShiftingKernel::Mps) {
+  const double k = shiftCoefficient<D>(c, coefficient, velocity.norm(), dt, kernel);
   if (kernel == NumericsConfig::ShiftingKernel::Wendland) {
     Vec<D> gradient = wendlandConcentrationGradient<D>(i, position, nl, c, include);
     gradient -= gradient.dot(normal) * normal;
-    return (-coefficient * 0.5 * c.re_number_density * velocity.norm() * dt) * gradient;
+    return -k * gradient;
   }
   Vec<D> first = neighbourhoodFirstMoment<D>(i, position, nl, c.re_number_density, include);
   first -= first.dot(normal) * normal;
-  return (-coefficient * c.l0 * velocity.norm() * dt * double(D) / c.n0) * first;
+  return -k * first;
 }
 
 }  // namespace mistfall

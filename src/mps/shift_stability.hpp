@@ -1,6 +1,6 @@
 // The stability bound of the explicit particle shift (numerics.shift_stability = beta; particle_shifting.hpp):
 // the shift delta r_i = -K sum_j g(r_ij), with K = A l0 |u_i| dt D0/n0 and g(r) = r w(r) / |r|^2 ("mps"), or
-// K = A h |u_i| dt l0^D and g(r) = grad W(|r|) ("wendland"), is one explicit step of a diffusion of the particles'
+// K = A h |u_i| dt and g(r) = l0^D grad W(|r|) ("wendland"), is one explicit step of a diffusion of the particles'
 // concentration (Fick's law, Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231, 1499), and a forward-Euler
 // diffusion step is stable only below a limit on its coefficient over the spacing squared (von Neumann's Fourier
 // number). Here the limit is taken per particle. Its Jacobian in a neighbour's position is K dg/dr, whose norm for
@@ -19,16 +19,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "case/case_config.hpp"
 #include "mps/pair_loop.hpp"
+#include "mps/particle_shifting.hpp"
 #include "mps/reference_density.hpp"
 
 namespace mistfall {
 
 // S_i above: the sum over the neighbours within re that `include(j)` admits of the norm of the pair term's
-// Jacobian, per unit of K (1/m^2 for "mps", 1/m^(D+2) for "wendland").
+// Jacobian, per unit of K (shiftCoefficient, particle_shifting.hpp) [1/m^2].
 template <int D, class Include>
 double shiftStiffness(std::size_t i, const std::vector<Vec<D>>& position, const NeighbourList& nl,
                       const MpsConstants& c, Include&& include, NumericsConfig::ShiftingKernel kernel) {
@@ -36,13 +36,14 @@ double shiftStiffness(std::size_t i, const std::vector<Vec<D>>& position, const 
   double sum = 0.0;
   if (kernel == NumericsConfig::ShiftingKernel::Wendland) {
     // W' = -5 alpha q (1 - q/2)^3 / h, W'' = -5 alpha (1 - q/2)^2 (1 - 2q) / h^2, q = r/h: norm max(|W''|, |W'|/r)
-    const double h = 0.5 * re;
-    const double alpha = D == 2 ? 7.0 / (4.0 * std::numbers::pi * h * h) : 21.0 / (16.0 * std::numbers::pi * h * h * h);
+    // (times l0^D, which the shift's sum carries)
+    const auto [h, alpha] = WendlandC2<D>(re);
+    const double volume = std::pow(c.l0, D);
     forEachPairWithin<D>(i, position, nl, re, include, [&](std::int32_t, const Vec<D>&, double r2, double) {
       const double q = std::sqrt(r2) / h, rest = 1.0 - 0.5 * q;
       const double second = 5.0 * alpha * rest * rest * std::abs(1.0 - 2.0 * q) / (h * h);
       const double first_over_r = 5.0 * alpha * rest * rest * rest / (h * h);
-      sum += std::max(second, first_over_r);
+      sum += volume * std::max(second, first_over_r);
     });
     return sum;
   }
@@ -60,10 +61,8 @@ double shiftStabilityFactor(std::size_t i, const std::vector<Vec<D>>& position, 
                             Include&& include,
                             NumericsConfig::ShiftingKernel kernel = NumericsConfig::ShiftingKernel::Mps) {
   if (beta <= 0.0 || coefficient <= 0.0 || speed <= 0.0) return 1.0;
-  const double k = kernel == NumericsConfig::ShiftingKernel::Wendland
-                       ? coefficient * 0.5 * c.re_number_density * speed * dt * std::pow(c.l0, D)
-                       : coefficient * c.l0 * speed * dt * double(D) / c.n0;
-  const double ks = k * shiftStiffness<D>(i, position, nl, c, include, kernel);
+  const double ks =
+      shiftCoefficient<D>(c, coefficient, speed, dt, kernel) * shiftStiffness<D>(i, position, nl, c, include, kernel);
   return ks > beta ? beta / ks : 1.0;
 }
 
